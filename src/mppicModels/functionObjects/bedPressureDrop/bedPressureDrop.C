@@ -1,0 +1,229 @@
+/*---------------------------------------------------------------------------*\
+    mppicModels: MFiX-PIC dense-particle models for OpenFOAM
+    This file is part of the mppicModels project, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "bedPressureDrop.H"
+#include "volFields.H"
+#include "kinematicCloud.H"
+#include "uniformDimensionedFields.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(bedPressureDrop, 0);
+    addToRunTimeSelectionTable(functionObject, bedPressureDrop, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::functionObjects::bedPressureDrop::patchIndex
+(
+    const dictionary& dict,
+    const word& keyword
+) const
+{
+    const word patchName(dict.get<word>(keyword));
+    const label patchi = mesh_.boundaryMesh().findPatchID(patchName);
+
+    if (patchi < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ", keyword " << keyword
+            << ": unknown patch " << patchName << nl
+            << "Valid patches: " << mesh_.boundaryMesh().names()
+            << exit(FatalIOError);
+    }
+
+    return patchi;
+}
+
+
+Foam::scalar Foam::functionObjects::bedPressureDrop::patchMeanDensity
+(
+    const label patchi
+) const
+{
+    if (rhoName_ == "rhoInf")
+    {
+        return rhoInf_;
+    }
+
+    const volScalarField& rho = lookupObject<volScalarField>(rhoName_);
+
+    return patchAverage(patchi, rho.boundaryField()[patchi]);
+}
+
+
+Foam::scalar Foam::functionObjects::bedPressureDrop::patchMeanPressure
+(
+    const label patchi
+) const
+{
+    const volScalarField& p = lookupObject<volScalarField>(pName_);
+
+    const scalar meanP = patchAverage(patchi, p.boundaryField()[patchi]);
+
+    if (p.dimensions() == dimPressure)
+    {
+        return meanP;
+    }
+
+    return patchMeanDensity(patchi)*meanP;
+}
+
+
+Foam::scalar Foam::functionObjects::bedPressureDrop::bedWeightPerArea() const
+{
+    if (cloudName_.empty())
+    {
+        return 0;
+    }
+
+    const kinematicCloud& cloud = lookupObject<kinematicCloud>(cloudName_);
+    const scalar magG =
+        mag(lookupObject<uniformDimensionedVectorField>("g").value());
+    const scalar area = gSum(mesh_.boundary()[lowerPatchi_].magSf());
+
+    return cloud.massInSystem()*magG/max(area, VSMALL);
+}
+
+
+void Foam::functionObjects::bedPressureDrop::writeFileHeader(Ostream& os)
+{
+    writeHeader(os, "Bed pressure drop [Pa]");
+    writeHeaderValue(os, "lowerPatch", mesh_.boundaryMesh()[lowerPatchi_].name());
+    writeHeaderValue(os, "upperPatch", mesh_.boundaryMesh()[upperPatchi_].name());
+    writeCommented(os, "Time");
+    writeTabbed(os, "pLower");
+    writeTabbed(os, "pUpper");
+    writeTabbed(os, "deltaP");
+    writeTabbed(os, "gasHead");
+    if (!cloudName_.empty())
+    {
+        writeTabbed(os, "weightPerArea");
+        writeTabbed(os, "deltaPByWeight");
+    }
+    os  << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::bedPressureDrop::bedPressureDrop
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    writeFile(mesh_, name, typeName, dict),
+    lowerPatchi_(-1),
+    upperPatchi_(-1),
+    pName_("p"),
+    rhoName_("rhoInf"),
+    rhoInf_(0),
+    cloudName_()
+{
+    read(dict);
+    writeFileHeader(file());
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::bedPressureDrop::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    writeFile::read(dict);
+
+    lowerPatchi_ = patchIndex(dict, "lowerPatch");
+    upperPatchi_ = patchIndex(dict, "upperPatch");
+
+    if (lowerPatchi_ == upperPatchi_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": lowerPatch and upperPatch"
+            << " are the same patch "
+            << mesh_.boundaryMesh()[lowerPatchi_].name()
+            << exit(FatalIOError);
+    }
+
+    pName_ = dict.lookupOrDefault<word>("p", "p");
+    rhoName_ = dict.lookupOrDefault<word>("rho", "rhoInf");
+
+    if (rhoName_ == "rhoInf")
+    {
+        rhoInf_ = dict.get<scalar>("rhoInf");
+
+        if (rhoInf_ <= 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Dictionary " << dict.name() << ", keyword rhoInf: value "
+                << rhoInf_ << " out of range; it must be > 0 [kg/m3]"
+                << exit(FatalIOError);
+        }
+    }
+
+    cloudName_ = dict.lookupOrDefault<word>("cloud", word::null);
+
+    return true;
+}
+
+
+bool Foam::functionObjects::bedPressureDrop::execute()
+{
+    return true;
+}
+
+
+bool Foam::functionObjects::bedPressureDrop::write()
+{
+    const scalar pLower = patchMeanPressure(lowerPatchi_);
+    const scalar pUpper = patchMeanPressure(upperPatchi_);
+    const scalar deltaP = pLower - pUpper;
+
+    // Hydrostatic head of the gas between the two patch centres
+    const vector& g = lookupObject<uniformDimensionedVectorField>("g").value();
+    const vector lowerCentre =
+        patchAverage(lowerPatchi_, mesh_.boundary()[lowerPatchi_].Cf());
+    const vector upperCentre =
+        patchAverage(upperPatchi_, mesh_.boundary()[upperPatchi_].Cf());
+    const scalar gasHead =
+        patchMeanDensity(lowerPatchi_)*(g & (lowerCentre - upperCentre));
+
+    const scalar weight = bedWeightPerArea();
+
+    Log << type() << " " << name() << ": deltaP = " << deltaP << " Pa";
+    if (!cloudName_.empty())
+    {
+        Log << ", bed weight/area = " << weight << " Pa"
+            << ", deltaP/weight = " << deltaP/max(weight, VSMALL);
+    }
+    Log << endl;
+
+    if (writeToFile())
+    {
+        OFstream& os = file();
+        writeCurrentTime(os);
+        os  << tab << pLower << tab << pUpper << tab << deltaP
+            << tab << gasHead;
+        if (!cloudName_.empty())
+        {
+            os  << tab << weight << tab << deltaP/max(weight, VSMALL);
+        }
+        os  << endl;
+    }
+
+    return true;
+}
+
+
+// ************************************************************************* //
