@@ -6,7 +6,7 @@
 #include "bedPressureDrop.H"
 #include "volFields.H"
 #include "kinematicCloud.H"
-#include "uniformDimensionedFields.H"
+#include "gravityMeshObject.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -87,8 +87,7 @@ Foam::scalar Foam::functionObjects::bedPressureDrop::bedWeightPerArea() const
     }
 
     const kinematicCloud& cloud = lookupObject<kinematicCloud>(cloudName_);
-    const scalar magG =
-        mag(lookupObject<uniformDimensionedVectorField>("g").value());
+    const scalar magG = mag(meshObjects::gravity::New(time_).value());
     const scalar area = gSum(mesh_.boundary()[lowerPatchi_].magSf());
 
     return cloud.massInSystem()*magG/max(area, VSMALL);
@@ -191,7 +190,7 @@ bool Foam::functionObjects::bedPressureDrop::write()
     const scalar deltaP = pLower - pUpper;
 
     // Hydrostatic head of the gas between the two patch centres
-    const vector& g = lookupObject<uniformDimensionedVectorField>("g").value();
+    const vector& g = meshObjects::gravity::New(time_).value();
     const vector lowerCentre =
         patchAverage(lowerPatchi_, mesh_.boundary()[lowerPatchi_].Cf());
     const vector upperCentre =
