@@ -79,21 +79,6 @@ Foam::scalar Foam::functionObjects::bedPressureDrop::patchMeanPressure
 }
 
 
-Foam::scalar Foam::functionObjects::bedPressureDrop::bedWeightPerArea() const
-{
-    if (cloudName_.empty())
-    {
-        return 0;
-    }
-
-    const kinematicCloud& cloud = lookupObject<kinematicCloud>(cloudName_);
-    const scalar magG = mag(meshObjects::gravity::New(time_).value());
-    const scalar area = gSum(mesh_.boundary()[lowerPatchi_].magSf());
-
-    return cloud.massInSystem()*magG/max(area, VSMALL);
-}
-
-
 void Foam::functionObjects::bedPressureDrop::writeFileHeader(Ostream& os)
 {
     writeHeader(os, "Bed pressure drop [Pa]");
@@ -132,7 +117,11 @@ Foam::functionObjects::bedPressureDrop::bedPressureDrop
     cloudName_()
 {
     read(dict);
-    writeFileHeader(file());
+
+    if (writeToFile())
+    {
+        writeFileHeader(file());
+    }
 }
 
 
@@ -177,6 +166,43 @@ bool Foam::functionObjects::bedPressureDrop::read(const dictionary& dict)
 }
 
 
+Foam::scalar Foam::functionObjects::bedPressureDrop::deltaP() const
+{
+    return patchMeanPressure(lowerPatchi_) - patchMeanPressure(upperPatchi_);
+}
+
+
+Foam::scalar Foam::functionObjects::bedPressureDrop::gasHead() const
+{
+    const vector& g = meshObjects::gravity::New(time_).value();
+
+    const vector lowerCentre =
+        patchAverage(lowerPatchi_, mesh_.boundary()[lowerPatchi_].Cf());
+    const vector upperCentre =
+        patchAverage(upperPatchi_, mesh_.boundary()[upperPatchi_].Cf());
+
+    return patchMeanDensity(lowerPatchi_)*(g & (lowerCentre - upperCentre));
+}
+
+
+Foam::scalar Foam::functionObjects::bedPressureDrop::bedWeightPerArea() const
+{
+    if (cloudName_.empty())
+    {
+        return 0;
+    }
+
+    const kinematicCloud& cloud = lookupObject<kinematicCloud>(cloudName_);
+    const scalar magG = mag(meshObjects::gravity::New(time_).value());
+    const scalar area = gSum(mesh_.boundary()[lowerPatchi_].magSf());
+
+    // massInSystem() sums this processor's parcels only
+    const scalar mass = returnReduce(cloud.massInSystem(), sumOp<scalar>());
+
+    return mass*magG/max(area, VSMALL);
+}
+
+
 bool Foam::functionObjects::bedPressureDrop::execute()
 {
     return true;
@@ -187,24 +213,17 @@ bool Foam::functionObjects::bedPressureDrop::write()
 {
     const scalar pLower = patchMeanPressure(lowerPatchi_);
     const scalar pUpper = patchMeanPressure(upperPatchi_);
-    const scalar deltaP = pLower - pUpper;
-
-    // Hydrostatic head of the gas between the two patch centres
-    const vector& g = meshObjects::gravity::New(time_).value();
-    const vector lowerCentre =
-        patchAverage(lowerPatchi_, mesh_.boundary()[lowerPatchi_].Cf());
-    const vector upperCentre =
-        patchAverage(upperPatchi_, mesh_.boundary()[upperPatchi_].Cf());
-    const scalar gasHead =
-        patchMeanDensity(lowerPatchi_)*(g & (lowerCentre - upperCentre));
-
+    const scalar dP = pLower - pUpper;
+    // Collective (reductions): evaluated on every processor, not only on
+    // the master that writes the file
+    const scalar head = gasHead();
     const scalar weight = bedWeightPerArea();
 
-    Log << type() << " " << name() << ": deltaP = " << deltaP << " Pa";
+    Log << type() << " " << name() << ": deltaP = " << dP << " Pa";
     if (!cloudName_.empty())
     {
         Log << ", bed weight/area = " << weight << " Pa"
-            << ", deltaP/weight = " << deltaP/max(weight, VSMALL);
+            << ", deltaP/weight = " << dP/max(weight, VSMALL);
     }
     Log << endl;
 
@@ -212,11 +231,11 @@ bool Foam::functionObjects::bedPressureDrop::write()
     {
         OFstream& os = file();
         writeCurrentTime(os);
-        os  << tab << pLower << tab << pUpper << tab << deltaP
-            << tab << gasHead;
+        os  << tab << pLower << tab << pUpper << tab << dP
+            << tab << head;
         if (!cloudName_.empty())
         {
-            os  << tab << weight << tab << deltaP/max(weight, VSMALL);
+            os  << tab << weight << tab << dP/max(weight, VSMALL);
         }
         os  << endl;
     }
