@@ -1,0 +1,364 @@
+/*---------------------------------------------------------------------------*\
+    mppicModels unit tests
+-------------------------------------------------------------------------------
+Application
+    Test-packingRules
+
+Description
+    The parcel-velocity rules of the packing models against hand-computed
+    velocities, and their coefficient checks.
+
+    coloringFunctionRules, alpha_cp = 0.6, e1 = 0.5, e2 = 0.9,
+    g = (0 -9.81 0); U intermediate velocity, us mean solids velocity,
+    dV impulse direction -grad(chi):
+      eq 18: chi(0.59) = 0, chi(0.6) = 0.6, chi(0.65) = 0.65
+      approach, eq 20: dV = (1 0 0), U = (-2 0.3 0), us = (0.5 0 0):
+          Urel = (-2.5 0.3 0), U' = us - 0.5*Urel = (1.75 -0.15 0)
+      separation: U = (2 0 0), same us, dV: unchanged
+      Case 1a: dV = (0 1 0), U = (0.2 -1 0), us = (0 -0.1 0):
+          eq 20 gives (-0.1 0.35 0); on: y = -e1*U.gHat*gHat_y = +0.5
+          -> (-0.1 0.5 0); off -> (-0.1 0.35 0)
+      Case 1b: dV = (1 0 0), U = (-0.5 0 0), us = (-1 0 0) (pack faster):
+          on -> 0.9*U = (-0.45 0 0); off -> unchanged
+      Case 1b then 1a: dV = (0 1 0), U = (0 -0.5 0), us = (0 -1 0):
+          1b gives (0 -0.45 0), 1a then sets y = +0.25 -> (0 0.25 0);
+          1a off -> (0 -0.45 0)
+      no pack near, dV = 0: unchanged
+
+    sniderStressRules, alpha_cp = 0.6, Ps = 100, gamma = 3, eps = 1e-7:
+      tau(0.3)  = 100*0.027/0.3                  = 9
+      tau(0.59) = 100*0.205379/0.01              = 2053.79
+      tau(0.65) = 100*0.274625/(1e-7*0.35)       = 7.846428571e8
+      tau(0.8)  capped at 1.15*0.6 = 0.69:
+                  100*0.328509/(1e-7*0.31)       = 1.059706452e9
+      dU = -dt*grad(tau)/(rho*alpha): grad = (0 -1000 0), rho 2500,
+          alpha 0.5, dt 1e-3 -> (0 8e-4 0); alpha 0 -> 0
+      limiter, e1 = 0.85: U = (0 -1 0), us = (0 -0.2 0), grad (0 -1000 0):
+          slip 0.8, (1 + e1)*slip = 1.48
+          dU = (0 2 0)   -> U'_y = -1 + min(2, 1.48)   = 0.48
+          dU = (0 0.5 0) -> U'_y = -1 + 0.5            = -0.5
+        separating U = (0 0.5 0): (1+e1)*slip = -1.295 -> unchanged 0.5
+        grad (500 0 0), U = (0.3 0 0), us = 0, dU = (-0.1 0 0):
+          U'_x = 0.3 + min(0, max(-0.1, -0.555)) = 0.2
+        slipVelocityFactor 0.5, first case with dU = (0 2 0):
+          slip = 0.5*(-0.2) + 1 = 0.9 -> U'_y = -1 + 1.665 = 0.665
+
+    Bad input: e1, e2 outside [0, 1], closePackFraction outside (0, 1) or
+    missing, pSolid < 0, gamma < 0, eps outside (0, 1),
+    slipVelocityFactor > 1: each a FatalIOError naming the keyword.
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "IOstreams.H"
+#include "coloringFunctionRules.H"
+#include "sniderStressRules.H"
+#include "unitTest.H"
+
+using namespace Foam;
+using namespace Foam::unitTest;
+
+void checkVector
+(
+    const string& what,
+    const vector& value,
+    const vector& expected
+)
+{
+    for (direction k = 0; k < vector::nComponents; ++k)
+    {
+        checkClose
+        (
+            what + " [" + Foam::name(label(k)) + "]",
+            value[k],
+            expected[k],
+            1e-12,
+            1
+        );
+    }
+}
+
+
+template<class Rules>
+bool rejects(const dictionary& dict, const word& keyword)
+{
+    FatalIOError.throwExceptions();
+    bool thrown = false;
+    try
+    {
+        Rules rules(dict);
+    }
+    catch (const IOerror& err)
+    {
+        thrown = err.message().find(keyword) != string::npos;
+        Info<< "    caught: " << err.message().c_str() << endl;
+    }
+    FatalIOError.dontThrowExceptions();
+    return thrown;
+}
+
+
+dictionary colouringCoeffs(const bool case1a = true, const bool case1b = true)
+{
+    dictionary dict;
+    dict.add("closePackFraction", 0.6);
+    dict.add("e1", 0.5);
+    dict.add("e2", 0.9);
+    dict.add("case1a", case1a);
+    dict.add("case1b", case1b);
+    return dict;
+}
+
+
+dictionary sniderCoeffs()
+{
+    dictionary dict;
+    dict.add("closePackFraction", 0.6);
+    dict.add("pSolid", 100.0);
+    dict.add("gamma", 3.0);
+    dict.add("eps", 1e-7);
+    dict.add("e1", 0.85);
+    return dict;
+}
+
+
+void testColoringFunction()
+{
+    const vector g(0, -9.81, 0);
+    const coloringFunctionRules rules(colouringCoeffs());
+    const coloringFunctionRules no1a(colouringCoeffs(false, true));
+    const coloringFunctionRules no1b(colouringCoeffs(true, false));
+
+    checkClose("chi(0.59)", rules.colour(0.59), 0, 0, 1);
+    checkClose("chi(0.6)", rules.colour(0.6), 0.6);
+    checkClose("chi(0.65)", rules.colour(0.65), 0.65);
+
+    checkVector
+    (
+        "approach, eq 20",
+        rules.correctedVelocity
+        (
+            vector(-2, 0.3, 0), vector(0.5, 0, 0), vector(1, 0, 0), g
+        ),
+        vector(1.75, -0.15, 0)
+    );
+    checkVector
+    (
+        "separation, unchanged",
+        rules.correctedVelocity
+        (
+            vector(2, 0, 0), vector(0.5, 0, 0), vector(1, 0, 0), g
+        ),
+        vector(2, 0, 0)
+    );
+    checkVector
+    (
+        "Case 1a on",
+        rules.correctedVelocity
+        (
+            vector(0.2, -1, 0), vector(0, -0.1, 0), vector(0, 1, 0), g
+        ),
+        vector(-0.1, 0.5, 0)
+    );
+    checkVector
+    (
+        "Case 1a off",
+        no1a.correctedVelocity
+        (
+            vector(0.2, -1, 0), vector(0, -0.1, 0), vector(0, 1, 0), g
+        ),
+        vector(-0.1, 0.35, 0)
+    );
+    checkVector
+    (
+        "Case 1b on",
+        rules.correctedVelocity
+        (
+            vector(-0.5, 0, 0), vector(-1, 0, 0), vector(1, 0, 0), g
+        ),
+        vector(-0.45, 0, 0)
+    );
+    checkVector
+    (
+        "Case 1b off",
+        no1b.correctedVelocity
+        (
+            vector(-0.5, 0, 0), vector(-1, 0, 0), vector(1, 0, 0), g
+        ),
+        vector(-0.5, 0, 0)
+    );
+    checkVector
+    (
+        "Case 1b then Case 1a along gravity",
+        rules.correctedVelocity
+        (
+            vector(0, -0.5, 0), vector(0, -1, 0), vector(0, 1, 0), g
+        ),
+        vector(0, 0.25, 0)
+    );
+    checkVector
+    (
+        "Case 1b along gravity, Case 1a off",
+        no1a.correctedVelocity
+        (
+            vector(0, -0.5, 0), vector(0, -1, 0), vector(0, 1, 0), g
+        ),
+        vector(0, -0.45, 0)
+    );
+    checkVector
+    (
+        "no close pack near (zero gradient), unchanged",
+        rules.correctedVelocity
+        (
+            vector(0.3, -2, 0.1), vector(0, -0.1, 0), vector::zero, g
+        ),
+        vector(0.3, -2, 0.1)
+    );
+}
+
+
+void testSnider()
+{
+    const sniderStressRules rules(sniderCoeffs());
+
+    checkClose("tau(0.3) [Pa]", rules.tau(0.3), 9, 1e-12);
+    checkClose("tau(0.59) [Pa]", rules.tau(0.59), 2053.79, 1e-12);
+    checkClose("tau(0.65) [Pa]", rules.tau(0.65), 27.4625/3.5e-8, 1e-12);
+    checkClose("tau(0.8), capped [Pa]", rules.tau(0.8), 32.8509/3.1e-8, 1e-12);
+
+    checkVector
+    (
+        "impulse velocity, eq 14",
+        rules.impulseVelocity(vector(0, -1000, 0), 2500, 0.5, 1e-3),
+        vector(0, 8e-4, 0)
+    );
+    checkVector
+    (
+        "impulse velocity where alpha = 0",
+        rules.impulseVelocity(vector(0, -1000, 0), 2500, 0, 1e-3),
+        vector::zero
+    );
+
+    const vector gradDown(0, -1000, 0);
+    checkVector
+    (
+        "limiter caps at the reflection (1 + e1)*slip",
+        rules.correctedVelocity
+        (
+            vector(0, -1, 0), vector(0, -0.2, 0), vector(0, 2, 0), gradDown
+        ),
+        vector(0, 0.48, 0)
+    );
+    checkVector
+    (
+        "limiter keeps a small impulse",
+        rules.correctedVelocity
+        (
+            vector(0, -1, 0), vector(0, -0.2, 0), vector(0, 0.5, 0), gradDown
+        ),
+        vector(0, -0.5, 0)
+    );
+    checkVector
+    (
+        "limiter: separating parcel unchanged",
+        rules.correctedVelocity
+        (
+            vector(0, 0.5, 0), vector(0, -0.2, 0), vector(0, 2, 0), gradDown
+        ),
+        vector(0, 0.5, 0)
+    );
+    checkVector
+    (
+        "limiter, positive gradient",
+        rules.correctedVelocity
+        (
+            vector(0.3, 0, 0), vector::zero, vector(-0.1, 0, 0),
+            vector(500, 0, 0)
+        ),
+        vector(0.2, 0, 0)
+    );
+
+    dictionary halfSlip(sniderCoeffs());
+    halfSlip.add("slipVelocityFactor", 0.5);
+    checkVector
+    (
+        "slipVelocityFactor 0.5",
+        sniderStressRules(halfSlip).correctedVelocity
+        (
+            vector(0, -1, 0), vector(0, -0.2, 0), vector(0, 2, 0), gradDown
+        ),
+        vector(0, 0.665, 0)
+    );
+}
+
+
+template<class Rules>
+void testBadValue
+(
+    const word& rulesName,
+    const dictionary& good,
+    const word& keyword,
+    const scalar value
+)
+{
+    dictionary dict(good);
+    dict.set(keyword, value);
+    checkTrue
+    (
+        rulesName + ": " + keyword + " = " + Foam::name(value)
+      + " rejected",
+        rejects<Rules>(dict, keyword)
+    );
+}
+
+
+int main(int argc, char *argv[])
+{
+    argList::noParallel();
+    argList args(argc, argv, false, false, false);
+
+    testColoringFunction();
+    testSnider();
+
+    testBadValue<coloringFunctionRules>("coloringFunctionRules", colouringCoeffs(), "e1", 1.5);
+    testBadValue<coloringFunctionRules>("coloringFunctionRules", colouringCoeffs(), "e1", -0.1);
+    testBadValue<coloringFunctionRules>("coloringFunctionRules", colouringCoeffs(), "e2", 1.2);
+    testBadValue<coloringFunctionRules>("coloringFunctionRules", colouringCoeffs(), "e2", -1);
+    testBadValue<coloringFunctionRules>
+    (
+        "coloringFunctionRules", colouringCoeffs(), "closePackFraction", 0
+    );
+    testBadValue<coloringFunctionRules>
+    (
+        "coloringFunctionRules", colouringCoeffs(), "closePackFraction", 1
+    );
+    testBadValue<sniderStressRules>("sniderStressRules", sniderCoeffs(), "pSolid", -1);
+    testBadValue<sniderStressRules>("sniderStressRules", sniderCoeffs(), "gamma", -1);
+    testBadValue<sniderStressRules>("sniderStressRules", sniderCoeffs(), "eps", 0);
+    testBadValue<sniderStressRules>("sniderStressRules", sniderCoeffs(), "e1", 1.01);
+    testBadValue<sniderStressRules>("sniderStressRules", sniderCoeffs(), "slipVelocityFactor", 2);
+
+    {
+        dictionary dict(colouringCoeffs());
+        dict.remove("closePackFraction");
+        checkTrue
+        (
+            "coloringFunctionRules: missing closePackFraction rejected",
+            rejects<coloringFunctionRules>(dict, "closePackFraction")
+        );
+    }
+    {
+        dictionary dict(sniderCoeffs());
+        dict.remove("closePackFraction");
+        checkTrue
+        (
+            "sniderStressRules: missing closePackFraction rejected",
+            rejects<sniderStressRules>(dict, "closePackFraction")
+        );
+    }
+
+    return summary();
+}
+
+
+// ************************************************************************* //
