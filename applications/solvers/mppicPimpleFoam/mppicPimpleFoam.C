@@ -30,7 +30,10 @@ Description
     libmppicModels are linked in and selectable at run time.
 
     Each step prints the number of parcels and the largest cell solids
-    fraction of the cloud (before the alphaMax limit). Writes U.<gas>,
+    fraction of the cloud (before the alphaMax limit) and, when the cloud
+    has a packing model, runs libmppicModels' packingMonitor (written to
+    postProcessing/packingMonitor; "packingMonitor off;" in
+    system/controlDict turns it off). Writes U.<gas>,
     p (kinematic), alpha.<gas> and alpha.<cloud> (solids fraction).
 
 Usage
@@ -48,6 +51,7 @@ Usage
 #include "PhaseIncompressibleTurbulenceModel.H"
 #include "pimpleControl.H"
 #include "basicKinematicMPPICCloud.H"
+#include "packingMonitor.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -74,6 +78,7 @@ int main(int argc, char *argv[])
     #include "createControl.H"
     #include "createTimeControls.H"
     #include "createFields.H"
+    #include "createPackingMonitor.H"
     #include "initContinuityErrs.H"
 
     Info<< "\nStarting time loop\n" << endl;
@@ -106,6 +111,11 @@ int main(int argc, char *argv[])
             {
                 gasTurbulence->correct();
             }
+        }
+
+        if (packingMonitorPtr.valid())
+        {
+            packingMonitorPtr->write();
         }
 
         runTime.write();

@@ -24,6 +24,12 @@ Description
           1b gives (0 -0.45 0), 1a then sets y = +0.25 -> (0 0.25 0);
           1a off -> (0 -0.45 0)
       no pack near, dV = 0: unchanged
+      reflection normal (only the component along dHat = dV/|dV|):
+        approach as above: U' = U - 1.5*(Urel.x)x = (1.75 0.3 0)
+        Case 1b: U = (-0.5 0.2 0), us = (-1 0 0), dV = (1 0 0):
+          U' = U - 0.1*(U.x)x = (-0.45 0.2 0)
+        Case 1a: U = (0.2 -1 0), us = (0 -0.1 0), dV = (0 1 0): eq 20 on
+          the y component gives 0.35, Case 1a then 0.5 -> (0.2 0.5 0)
 
     sniderStressRules, alpha_cp = 0.6, Ps = 100, gamma = 3, eps = 1e-7:
       tau(0.3)  = 100*0.027/0.3                  = 9
@@ -98,9 +104,15 @@ bool rejects(const dictionary& dict, const word& keyword)
 }
 
 
-dictionary colouringCoeffs(const bool case1a = true, const bool case1b = true)
+dictionary colouringCoeffs
+(
+    const bool case1a = true,
+    const bool case1b = true,
+    const word& reflection = "vector"
+)
 {
     dictionary dict;
+    dict.add("reflection", reflection);
     dict.add("closePackFraction", 0.6);
     dict.add("e1", 0.5);
     dict.add("e2", 0.9);
@@ -205,6 +217,35 @@ void testColoringFunction()
         ),
         vector(0, -0.45, 0)
     );
+    const coloringFunctionRules normal(colouringCoeffs(true, true, "normal"));
+    checkVector
+    (
+        "approach, normal component only",
+        normal.correctedVelocity
+        (
+            vector(-2, 0.3, 0), vector(0.5, 0, 0), vector(1, 0, 0), g
+        ),
+        vector(1.75, 0.3, 0)
+    );
+    checkVector
+    (
+        "Case 1b, normal component only",
+        normal.correctedVelocity
+        (
+            vector(-0.5, 0.2, 0), vector(-1, 0, 0), vector(1, 0, 0), g
+        ),
+        vector(-0.45, 0.2, 0)
+    );
+    checkVector
+    (
+        "Case 1a, normal reflection (impulse along g)",
+        normal.correctedVelocity
+        (
+            vector(0.2, -1, 0), vector(0, -0.1, 0), vector(0, 1, 0), g
+        ),
+        vector(0.2, 0.5, 0)
+    );
+
     checkVector
     (
         "no close pack near (zero gradient), unchanged",
@@ -338,6 +379,15 @@ int main(int argc, char *argv[])
     testBadValue<sniderStressRules>("sniderStressRules", sniderCoeffs(), "e1", 1.01);
     testBadValue<sniderStressRules>("sniderStressRules", sniderCoeffs(), "slipVelocityFactor", 2);
 
+    {
+        dictionary dict(colouringCoeffs());
+        dict.set("reflection", "sideways");
+        checkTrue
+        (
+            "coloringFunctionRules: reflection sideways rejected",
+            rejects<coloringFunctionRules>(dict, "reflection")
+        );
+    }
     {
         dictionary dict(colouringCoeffs());
         dict.remove("closePackFraction");

@@ -5,6 +5,19 @@
 
 #include "ColoringFunction.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::Enum
+<
+    typename Foam::PackingModels::ColoringFunction<CloudType>::impulseType
+>
+Foam::PackingModels::ColoringFunction<CloudType>::impulseTypeNames
+({
+    { impulseType::gradient, "gradient" },
+    { impulseType::neighbour, "neighbour" },
+});
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -15,7 +28,16 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
 )
 :
     MfixPackingModel<CloudType>(dict, owner, typeName),
-    rules_(this->coeffs())
+    rules_(this->coeffs()),
+    impulse_
+    (
+        impulseTypeNames.lookupOrDefault
+        (
+            "impulse",
+            this->coeffs(),
+            impulseType::neighbour
+        )
+    )
 {}
 
 
@@ -26,8 +48,35 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
 )
 :
     MfixPackingModel<CloudType>(cm),
-    rules_(cm.rules_)
+    rules_(cm.rules_),
+    impulse_(cm.impulse_)
 {}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::PackingModels::ColoringFunction<CloudType>::impulseAndPackVelocity
+(
+    const typename CloudType::parcelType& p,
+    vector& impulse,
+    vector& uPack
+) const
+{
+    if (impulse_ == impulseType::gradient)
+    {
+        impulse = -this->packingGradAt(p);
+        uPack = this->uMeanAt(p);
+        return;
+    }
+
+    // The cell ahead: when close packed, the pack lies along the normal
+    const typename MfixPackingModel<CloudType>::neighbourState ahead =
+        this->neighbourAhead(p);
+
+    impulse = -ahead.value*ahead.normal;
+    uPack = ahead.found ? ahead.uMean : this->uMeanAt(p);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -40,13 +89,14 @@ velocityCorrection
     const scalar deltaT
 ) const
 {
-    const vector impulse = -this->packingGradAt(p);
+    vector impulse, uPack;
+    impulseAndPackVelocity(p, impulse, uPack);
 
     return
         rules_.correctedVelocity
         (
             p.U(),
-            this->uMeanAt(p),
+            uPack,
             impulse,
             this->owner().g().value()
         )

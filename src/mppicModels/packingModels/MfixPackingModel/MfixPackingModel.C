@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "MfixPackingModel.H"
+#include "wallPolyPatch.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -21,7 +22,11 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     coeffs_(dict.subDict(type + "Coeffs")),
     volumeAverage_(nullptr),
     uAverage_(nullptr),
-    packingField_(nullptr)
+    packingField_(nullptr),
+    cellValues_(),
+    cellUMean_(),
+    coupledValues_(),
+    coupledUMean_()
 {}
 
 
@@ -35,8 +40,77 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     coeffs_(cm.coeffs_),
     volumeAverage_(nullptr),
     uAverage_(nullptr),
-    packingField_(nullptr)
+    packingField_(nullptr),
+    cellValues_(),
+    cellUMean_(),
+    coupledValues_(),
+    coupledUMean_()
 {}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- Cell values of a field and the neighbouring values across coupled
+    //  patches (processor, cyclic)
+    template<class Type>
+    void cacheWithCoupledNeighbours
+    (
+        const fvMesh& mesh,
+        const Field<Type>& values,
+        Field<Type>& cellValues,
+        PtrList<Field<Type>>& coupledValues
+    )
+    {
+        GeometricField<Type, fvPatchField, volMesh> field
+        (
+            IOobject
+            (
+                "mfixPackingModel:cellValues",
+                mesh.time().timeName(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh,
+            dimensioned<Type>(dimless, Zero),
+            calculatedFvPatchField<Type>::typeName
+        );
+        field.primitiveFieldRef() = values;
+        field.correctBoundaryConditions();
+
+        cellValues = field.primitiveField();
+
+        coupledValues.clear();
+        coupledValues.setSize(mesh.boundary().size());
+        forAll(field.boundaryField(), patchi)
+        {
+            const fvPatchField<Type>& pf = field.boundaryField()[patchi];
+            if (pf.coupled())
+            {
+                coupledValues.set(patchi, pf.patchNeighbourField().ptr());
+            }
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::PackingModels::MfixPackingModel<CloudType>::cacheCellValues()
+{
+    const fvMesh& mesh = this->owner().mesh();
+
+    cacheWithCoupledNeighbours
+    (
+        mesh, packingField_->primitiveField()(), cellValues_, coupledValues_
+    );
+    cacheWithCoupledNeighbours
+    (
+        mesh, uAverage_->primitiveField()(), cellUMean_, coupledUMean_
+    );
+}
 
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
@@ -76,6 +150,107 @@ Foam::vector Foam::PackingModels::MfixPackingModel<CloudType>::packingGradAt
 }
 
 
+template<class CloudType>
+typename Foam::PackingModels::MfixPackingModel<CloudType>::neighbourState
+Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
+(
+    const typename CloudType::parcelType& p
+) const
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const label celli = p.cell();
+
+    // The cloud has already moved the parcel with its intermediate velocity
+    // (MPPICCloud::motion). If that move took it across a face, the cell it
+    // moved into is its own cell: that is the cell it approaches. Else it
+    // approaches the cell beyond the face its velocity points at most
+    // directly.
+    const scalar deltaT = this->owner().db().time().deltaTValue();
+    const point position = p.position();
+
+    neighbourState ahead;
+    label towardFace = -1;
+    scalar bestApproach = 0;
+    scalar bestCrossing = 0;
+
+    for (const label facei : mesh.cells()[celli])
+    {
+        vector n = mesh.faceAreas()[facei]/mag(mesh.faceAreas()[facei]);
+        if (mesh.faceOwner()[facei] != celli)
+        {
+            n = -n;
+        }
+
+        const scalar approach = p.U() & n;
+
+        if (approach > bestApproach)
+        {
+            bestApproach = approach;
+            towardFace = facei;
+            ahead.normal = n;
+        }
+        else if (approach < 0 && mesh.isInternalFace(facei))
+        {
+            // How far beyond this face the parcel started the step
+            const scalar crossing =
+                -approach*deltaT
+              - ((mesh.faceCentres()[facei] - position) & n);
+
+            if (crossing > bestCrossing)
+            {
+                bestCrossing = crossing;
+                ahead.found = true;
+                ahead.normal = -n;
+            }
+        }
+    }
+
+    if (ahead.found)
+    {
+        ahead.value = cellValues_[celli];
+        ahead.uMean = cellUMean_[celli];
+        return ahead;
+    }
+
+    if (towardFace < 0)
+    {
+        return ahead;
+    }
+
+    if (mesh.isInternalFace(towardFace))
+    {
+        const label nbr =
+            mesh.faceOwner()[towardFace] == celli
+          ? mesh.faceNeighbour()[towardFace]
+          : mesh.faceOwner()[towardFace];
+
+        ahead.found = true;
+        ahead.value = cellValues_[nbr];
+        ahead.uMean = cellUMean_[nbr];
+        return ahead;
+    }
+
+    const label patchi = mesh.boundaryMesh().whichPatch(towardFace);
+    const polyPatch& patch = mesh.boundaryMesh()[patchi];
+
+    if (coupledValues_.set(patchi))
+    {
+        const label patchFacei = patch.whichFace(towardFace);
+        ahead.found = true;
+        ahead.value = coupledValues_[patchi][patchFacei];
+        ahead.uMean = coupledUMean_[patchi][patchFacei];
+    }
+    else if (isA<wallPolyPatch>(patch))
+    {
+        ahead.found = true;
+        ahead.value = wallValue(cellValues_[celli]);
+        ahead.uMean = Zero;
+    }
+
+    return ahead;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -91,6 +266,10 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheFields
         volumeAverage_ = nullptr;
         uAverage_ = nullptr;
         packingField_.clear();
+        cellValues_.clear();
+        cellUMean_.clear();
+        coupledValues_.clear();
+        coupledUMean_.clear();
         return;
     }
 
@@ -131,6 +310,11 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheFields
 
     // Assignment also updates the gradient used by interpolateGrad
     packingField_() = tvalues;
+
+    if (needsCellValues())
+    {
+        cacheCellValues();
+    }
 }
 
 

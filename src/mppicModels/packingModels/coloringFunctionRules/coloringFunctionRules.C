@@ -32,8 +32,27 @@ Foam::coloringFunctionRules::coloringFunctionRules(const dictionary& coeffs)
         )
     ),
     case1a_(coeffs.lookupOrDefault<bool>("case1a", true)),
-    case1b_(coeffs.lookupOrDefault<bool>("case1b", true))
+    case1b_(coeffs.lookupOrDefault<bool>("case1b", true)),
+    normalOnly_(readReflection(coeffs))
 {}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::coloringFunctionRules::readReflection(const dictionary& coeffs)
+{
+    const word reflection(coeffs.lookupOrDefault<word>("reflection", "normal"));
+
+    if (reflection != "normal" && reflection != "vector")
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Dictionary " << coeffs.name() << ", keyword reflection: "
+            << "value " << reflection << " is not one of (normal vector)"
+            << exit(FatalIOError);
+    }
+
+    return reflection == "normal";
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -48,17 +67,25 @@ Foam::vector Foam::coloringFunctionRules::correctedVelocity
 {
     const vector Urel = U - uMean;
 
+    // The part of a velocity that the rules change: all of it (eqs 20, 23
+    // as written) or its component along the impulse direction
+    const vector dHat = impulse/max(mag(impulse), VSMALL);
+    auto changed = [&](const vector& v)
+    {
+        return normalOnly_ ? (v & dHat)*dHat : v;
+    };
+
     vector Unew = U;
 
     if ((Urel & impulse) < 0)
     {
         // Approaching the pack: reflect the relative velocity (eq 20)
-        Unew = uMean - e1_*Urel;
+        Unew = U - (1 + e1_)*changed(Urel);
     }
     else if (case1b_ && (U & impulse) < 0)
     {
         // Case 1b (eq 23): moving into the pack, but slower than the pack
-        Unew = e2_*U;
+        Unew = U - (1 - e2_)*changed(U);
     }
 
     // Case 1a (eq 22): moving along gravity onto a pack that lies along

@@ -1,0 +1,268 @@
+/*---------------------------------------------------------------------------*\
+    mppicSeedParcels: part of the mppicModels project, GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Application
+    mppicSeedParcels
+
+Group
+    grpPreProcessingUtilities
+
+Description
+    Fills a box or a cellZone with parcels at a target solids fraction, a
+    given number of parcels per cell, on a jittered lattice, and writes the
+    positions file of manualInjection together with the number of particles
+    per parcel. Beds then start at the intended packing instead of the
+    Poisson over-packing of random seeding (at 5 parcels per cell, random
+    seeding puts some cells at twice the mean).
+
+    The lattice spacing is h = (V/N)^(1/3) with V the mean volume of the
+    region's cells and N the parcels per cell; each lattice point moves by a
+    uniform random offset in [-jitter*h/2, jitter*h/2] per direction and is
+    kept when it lies in a cell of the region. Each parcel carries
+        nParticle = alpha_s*V_region/(nParcels*pi*d^3/6)
+    particles, so that the seeded solids volume is alpha_s*V_region exactly.
+
+Usage
+    mppicSeedParcels [-dict <file>]
+
+    system/mppicSeedParcelsDict:
+    \verbatim
+    region          box;            // box or cellZone
+    box             (0 0 0) (0.05 0.1 0.005);   // region box only
+    cellZone        bed;            // region cellZone only
+    solidsFraction  0.3;
+    parcelsPerCell  10;
+    diameter        2e-4;           // particle diameter [m]
+    jitter          0.5;
+    seed            1;
+    positionsFile   kinematicCloudPositions;    // in constant/
+    \endverbatim
+
+    \table
+        Keyword        | Meaning                               | Default | Range
+        region         | box or cellZone                       | (required) | box, cellZone
+        box            | min and max corners [m]               | (region box) | min < max
+        cellZone       | name of the cellZone                  | (region cellZone) |
+        solidsFraction | target solids fraction                | (required) | (0, 1)
+        parcelsPerCell | parcels per cell                      | (required) | [1, inf)
+        diameter       | particle diameter [m]                 | (required) | (0, inf)
+        jitter         | random offset, fraction of the spacing | 0.5    | [0, 1)
+        seed           | random seed                           | 1       | integer
+        positionsFile  | output file in constant/              | kinematicCloudPositions |
+    \endtable
+    MFiX equivalents: PIC_CONST_STATWT / PIC_CONST_NPC (constant
+    statistical weight or parcels per cell) of the initial condition.
+
+    Writes constant/<positionsFile> and constant/seededParcels with
+    nParticle, nParcels and solidsVolume; a cloud dictionary uses it as
+        #include "seededParcels"
+        ... nParticle $nParticle;
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "Random.H"
+#include "boundedCoefficient.H"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+// Cells of the region: centres in the box, or the cellZone
+boolList regionCells(const fvMesh& mesh, const dictionary& dict)
+{
+    const word region(dict.get<word>("region"));
+    boolList inRegion(mesh.nCells(), false);
+
+    if (region == "box")
+    {
+        const boundBox box(dict.lookup("box"));
+        if (!(box.min() < box.max()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Dictionary " << dict.name() << ", keyword box: "
+                << box << " must have min < max in every direction"
+                << exit(FatalIOError);
+        }
+        forAll(inRegion, celli)
+        {
+            inRegion[celli] = box.contains(mesh.C()[celli]);
+        }
+    }
+    else if (region == "cellZone")
+    {
+        const word zoneName(dict.get<word>("cellZone"));
+        const label zonei = mesh.cellZones().findZoneID(zoneName);
+        if (zonei < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Dictionary " << dict.name() << ", keyword cellZone: "
+                << "unknown zone " << zoneName << "; zones: "
+                << mesh.cellZones().names() << exit(FatalIOError);
+        }
+        for (const label celli : mesh.cellZones()[zonei])
+        {
+            inRegion[celli] = true;
+        }
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ", keyword region: value "
+            << region << " is not one of (box cellZone)" << exit(FatalIOError);
+    }
+
+    return inRegion;
+}
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Seed parcels on a jittered lattice at a target solids fraction"
+    );
+    argList::noParallel();
+    argList::addOption("dict", "file", "alternative mppicSeedParcelsDict");
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const IOdictionary dict
+    (
+        IOobject
+        (
+            args.lookupOrDefault<fileName>
+            (
+                "dict", runTime.system()/"mppicSeedParcelsDict"
+            ),
+            runTime,
+            IOobject::MUST_READ
+        )
+    );
+
+    using namespace mppicCoefficients;
+    const scalar alpha = read(dict, "solidsFraction", bounds::open(0, 1));
+    const scalar perCell = read(dict, "parcelsPerCell", bounds::atLeast(1));
+    const scalar diameter = read(dict, "diameter", bounds::above(0));
+    const scalar jitter = read(dict, "jitter", 0.5, bounds::closedOpen(0, 1));
+    const label seed = dict.lookupOrDefault<label>("seed", 1);
+    const word positionsFile
+    (
+        dict.lookupOrDefault<word>("positionsFile", "kinematicCloudPositions")
+    );
+
+    const boolList inRegion(regionCells(mesh, dict));
+
+    // Region volume and bounds
+    scalar regionVolume = 0;
+    label nRegionCells = 0;
+    boundBox bounds(boundBox::invertedBox);
+    forAll(inRegion, celli)
+    {
+        if (inRegion[celli])
+        {
+            regionVolume += mesh.V()[celli];
+            ++nRegionCells;
+            for (const label pointi : mesh.cellPoints()[celli])
+            {
+                bounds.add(mesh.points()[pointi]);
+            }
+        }
+    }
+    if (nRegionCells == 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": the region has no cells"
+            << exit(FatalIOError);
+    }
+
+    // Lattice with perCell points per mean cell volume
+    const scalar spacing = cbrt(regionVolume/nRegionCells/perCell);
+    const vector span = bounds.span();
+    const label nx = max(1, label(span.x()/spacing + 0.5));
+    const label ny = max(1, label(span.y()/spacing + 0.5));
+    const label nz = max(1, label(span.z()/spacing + 0.5));
+    const vector step(span.x()/nx, span.y()/ny, span.z()/nz);
+
+    Random rndGen(seed);
+    DynamicList<point> positions(nx*ny*nz);
+
+    for (label k = 0; k < nz; ++k)
+    {
+        for (label j = 0; j < ny; ++j)
+        {
+            for (label i = 0; i < nx; ++i)
+            {
+                const vector offset
+                (
+                    jitter*(rndGen.sample01<scalar>() - 0.5),
+                    jitter*(rndGen.sample01<scalar>() - 0.5),
+                    jitter*(rndGen.sample01<scalar>() - 0.5)
+                );
+                const point pt
+                (
+                    bounds.min()
+                  + cmptMultiply(vector(i + 0.5, j + 0.5, k + 0.5) + offset, step)
+                );
+
+                const label celli = mesh.findCell(pt);
+                if (celli >= 0 && inRegion[celli])
+                {
+                    positions.append(pt);
+                }
+            }
+        }
+    }
+
+    const scalar particleVolume = constant::mathematical::pi/6*pow3(diameter);
+    const scalar solidsVolume = alpha*regionVolume;
+    const scalar nParticle = solidsVolume/(positions.size()*particleVolume);
+
+    IOField<point> positionsIO
+    (
+        IOobject
+        (
+            positionsFile,
+            runTime.constant(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        std::move(positions)
+    );
+    positionsIO.write();
+
+    IOdictionary seeded
+    (
+        IOobject
+        (
+            "seededParcels",
+            runTime.constant(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    seeded.add("nParticle", nParticle);
+    seeded.add("nParcels", positionsIO.size());
+    seeded.add("solidsVolume", solidsVolume);
+    seeded.add("regionVolume", regionVolume);
+    seeded.regIOobject::write();
+
+    Info<< "Seeded " << positionsIO.size() << " parcels in " << nRegionCells
+        << " cells (" << scalar(positionsIO.size())/nRegionCells
+        << " per cell), lattice " << nx << " x " << ny << " x " << nz
+        << nl << "nParticle = " << nParticle << " for solids fraction "
+        << alpha << " (solids volume " << solidsVolume << " m3)" << nl
+        << "Wrote constant/" << positionsFile << " and constant/seededParcels"
+        << nl << "End" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //
