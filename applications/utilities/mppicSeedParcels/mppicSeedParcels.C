@@ -15,8 +15,9 @@ Description
     Poisson over-packing of random seeding (at 5 parcels per cell, random
     seeding puts some cells at twice the mean).
 
-    The lattice spacing is h = (V/N)^(1/3) with V the mean volume of the
-    region's cells and N the parcels per cell; each lattice point moves by a
+    The lattice has N parcels per mean cell volume of the region (counts
+    per direction rounded one direction at a time, so that a region one
+    cell deep still gets N per cell); each lattice point moves by a
     uniform random offset in [-jitter*h/2, jitter*h/2] per direction and is
     kept when it lies in a cell of the region. Each parcel carries
         nParticle = alpha_s*V_region/(nParcels*pi*d^3/6)
@@ -178,12 +179,17 @@ int main(int argc, char *argv[])
             << exit(FatalIOError);
     }
 
-    // Lattice with perCell points per mean cell volume
-    const scalar spacing = cbrt(regionVolume/nRegionCells/perCell);
+    // Lattice with perCell points per mean cell volume: the counts per
+    // direction are rounded one direction at a time, so that thin regions
+    // (one cell deep) still get the intended total
     const vector span = bounds.span();
-    const label nx = max(1, label(span.x()/spacing + 0.5));
-    const label ny = max(1, label(span.y()/spacing + 0.5));
+    const scalar nTarget =
+        perCell*nRegionCells*(span.x()*span.y()*span.z())/regionVolume;
+    const scalar spacing = Foam::cbrt(span.x()*span.y()*span.z()/nTarget);
     const label nz = max(1, label(span.z()/spacing + 0.5));
+    const scalar spacingXY = Foam::sqrt(span.x()*span.y()*nz/nTarget);
+    const label ny = max(1, label(span.y()/spacingXY + 0.5));
+    const label nx = max(1, label(nTarget/(nz*ny) + 0.5));
     const vector step(span.x()/nx, span.y()/ny, span.z()/nz);
 
     Random rndGen(seed);

@@ -37,7 +37,9 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
             this->coeffs(),
             impulseType::neighbour
         )
-    )
+    ),
+    capacityLimit_(this->coeffs().lookupOrDefault("capacityLimit", true)),
+    entries_()
 {}
 
 
@@ -49,7 +51,9 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
 :
     MfixPackingModel<CloudType>(cm),
     rules_(cm.rules_),
-    impulse_(cm.impulse_)
+    impulse_(cm.impulse_),
+    capacityLimit_(cm.capacityLimit_),
+    entries_()
 {}
 
 
@@ -70,6 +74,29 @@ void Foam::PackingModels::ColoringFunction<CloudType>::impulseAndPackVelocity
         return;
     }
 
+    // A parcel that moved into its cell in this step and may not stay:
+    // the pack is its own cell, along the way it came in
+    const typename ParcelEntries<CloudType>::entry* entered =
+        entries_.find(p);
+
+    if (entered)
+    {
+        const scalar packValue =
+            max(this->cellValue(p.cell()), rules_.closePackFraction());
+
+        const bool blocked =
+            capacityLimit_
+          ? !entered->admitted
+          : this->cellValue(p.cell()) > 0;
+
+        if (blocked)
+        {
+            impulse = -packValue*entered->direction;
+            uPack = this->cellUMean(p.cell());
+            return;
+        }
+    }
+
     // The cell ahead: when close packed, the pack lies along the normal
     const typename MfixPackingModel<CloudType>::neighbourState ahead =
         this->neighbourAhead(p);
@@ -79,7 +106,54 @@ void Foam::PackingModels::ColoringFunction<CloudType>::impulseAndPackVelocity
 }
 
 
+template<class CloudType>
+Foam::tmp<Foam::scalarField>
+Foam::PackingModels::ColoringFunction<CloudType>::cellPackingValues() const
+{
+    if (!capacityLimit_)
+    {
+        return MfixPackingModel<CloudType>::cellPackingValues();
+    }
+
+    tmp<scalarField> tvalues(new scalarField(entries_.startFraction()));
+    for (scalar& value : tvalues.ref())
+    {
+        value = rules_.colour(value);
+    }
+    return tvalues;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
+(
+    const bool store
+)
+{
+    if (store && impulse_ == impulseType::neighbour)
+    {
+        entries_.update
+        (
+            this->owner(),
+            rules_.closePackFraction(),
+            this->owner().db().time().deltaTValue()
+        );
+    }
+    else
+    {
+        // End of the packing step: where each parcel now is
+        entries_.clear();
+        if (impulse_ == impulseType::neighbour)
+        {
+            entries_.recordCells(this->owner());
+        }
+    }
+
+    MfixPackingModel<CloudType>::cacheFields(store);
+}
+
 
 template<class CloudType>
 Foam::vector Foam::PackingModels::ColoringFunction<CloudType>::
@@ -92,7 +166,7 @@ velocityCorrection
     vector impulse, uPack;
     impulseAndPackVelocity(p, impulse, uPack);
 
-    return
+    vector correction =
         rules_.correctedVelocity
         (
             p.U(),
@@ -101,6 +175,20 @@ velocityCorrection
             this->owner().g().value()
         )
       - p.U();
+
+    if (capacityLimit_ && impulse_ == impulseType::neighbour)
+    {
+        correction =
+            entries_.limitedCorrection
+            (
+                this->owner().mesh(),
+                p,
+                correction,
+                deltaT
+            );
+    }
+
+    return correction;
 }
 
 

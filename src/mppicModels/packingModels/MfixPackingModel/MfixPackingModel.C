@@ -104,7 +104,7 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheCellValues()
 
     cacheWithCoupledNeighbours
     (
-        mesh, packingField_->primitiveField()(), cellValues_, coupledValues_
+        mesh, cellPackingValues()(), cellValues_, coupledValues_
     );
     cacheWithCoupledNeighbours
     (
@@ -114,6 +114,34 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheCellValues()
 
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::tmp<Foam::scalarField>
+Foam::PackingModels::MfixPackingModel<CloudType>::cellPackingValues() const
+{
+    return packingField_->primitiveField();
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::PackingModels::MfixPackingModel<CloudType>::cellValue
+(
+    const label celli
+) const
+{
+    return cellValues_[celli];
+}
+
+
+template<class CloudType>
+Foam::vector Foam::PackingModels::MfixPackingModel<CloudType>::cellUMean
+(
+    const label celli
+) const
+{
+    return cellUMean_[celli];
+}
+
 
 template<class CloudType>
 Foam::scalar Foam::PackingModels::MfixPackingModel<CloudType>::alphaAt
@@ -160,18 +188,10 @@ Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
     const fvMesh& mesh = this->owner().mesh();
     const label celli = p.cell();
 
-    // The cloud has already moved the parcel with its intermediate velocity
-    // (MPPICCloud::motion). If that move took it across a face, the cell it
-    // moved into is its own cell: that is the cell it approaches. Else it
-    // approaches the cell beyond the face its velocity points at most
-    // directly.
-    const scalar deltaT = this->owner().db().time().deltaTValue();
-    const point position = p.position();
-
+    // The face the parcel moves toward most directly
     neighbourState ahead;
     label towardFace = -1;
     scalar bestApproach = 0;
-    scalar bestCrossing = 0;
 
     for (const label facei : mesh.cells()[celli])
     {
@@ -182,34 +202,12 @@ Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
         }
 
         const scalar approach = p.U() & n;
-
         if (approach > bestApproach)
         {
             bestApproach = approach;
             towardFace = facei;
             ahead.normal = n;
         }
-        else if (approach < 0 && mesh.isInternalFace(facei))
-        {
-            // How far beyond this face the parcel started the step
-            const scalar crossing =
-                -approach*deltaT
-              - ((mesh.faceCentres()[facei] - position) & n);
-
-            if (crossing > bestCrossing)
-            {
-                bestCrossing = crossing;
-                ahead.found = true;
-                ahead.normal = -n;
-            }
-        }
-    }
-
-    if (ahead.found)
-    {
-        ahead.value = cellValues_[celli];
-        ahead.uMean = cellUMean_[celli];
-        return ahead;
     }
 
     if (towardFace < 0)

@@ -1,0 +1,282 @@
+/*---------------------------------------------------------------------------*\
+    mppicModels: MFiX-PIC dense-particle models for OpenFOAM
+    This file is part of the mppicModels project, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "ParcelEntries.H"
+#include "coupledPolyPatch.H"
+#include <algorithm>
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::label Foam::ParcelEntries<CloudType>::crossedFace
+(
+    const fvMesh& mesh,
+    const parcelType& p,
+    const scalar deltaT,
+    vector& normal,
+    scalar& depth
+)
+{
+    const label celli = p.cell();
+    const point position = p.position();
+
+    label crossed = -1;
+    depth = 0;
+
+    for (const label facei : mesh.cells()[celli])
+    {
+        const bool coupledFace =
+            !mesh.isInternalFace(facei)
+         && isA<coupledPolyPatch>
+            (
+                mesh.boundaryMesh()[mesh.boundaryMesh().whichPatch(facei)]
+            );
+
+        if (!mesh.isInternalFace(facei) && !coupledFace)
+        {
+            continue;
+        }
+
+        vector n = mesh.faceAreas()[facei]/mag(mesh.faceAreas()[facei]);
+        if (mesh.faceOwner()[facei] != celli)
+        {
+            n = -n;
+        }
+
+        const scalar Un = p.U() & n;
+        if (Un < 0)
+        {
+            const scalar beyond =
+                -Un*deltaT - ((mesh.faceCentres()[facei] - position) & n);
+
+            if (beyond > depth)
+            {
+                depth = beyond;
+                crossed = facei;
+                normal = n;
+            }
+        }
+    }
+
+    return crossed;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::ParcelEntries<CloudType>::update
+(
+    const CloudType& cloud,
+    const scalar closePackFraction,
+    const scalar deltaT
+)
+{
+    const fvMesh& mesh = cloud.mesh();
+
+    clear();
+    scalarField startVolume(mesh.nCells(), Zero);
+
+    // Entrants of each cell, with how deep they went
+    struct entrant
+    {
+        const parcelType* parcel;
+        scalar depth;
+        scalar volume;
+    };
+    List<DynamicList<entrant>> entrants(mesh.nCells());
+
+    for (const parcelType& p : cloud)
+    {
+        const scalar volume = p.nParticle()*p.volume();
+        const label celli = p.cell();
+
+        // Where it was: recorded, else guessed from its velocity
+        label from = -1;
+        vector direction = Zero;
+        scalar depth = 0;
+
+        const auto last = lastCells_.cfind(labelPair(p.origProc(), p.origId()));
+        if (last.found())
+        {
+            from = *last;
+            if (from == celli)
+            {
+                startVolume[celli] += volume;
+                continue;
+            }
+            direction = mesh.cellCentres()[celli] - mesh.cellCentres()[from];
+            depth = mag(direction);
+            direction /= max(depth, VSMALL);
+        }
+        else
+        {
+            vector n;
+            const label facei = crossedFace(mesh, p, deltaT, n, depth);
+            if (facei < 0)
+            {
+                startVolume[celli] += volume;
+                continue;
+            }
+            direction = -n;
+            if (mesh.isInternalFace(facei))
+            {
+                from =
+                    mesh.faceOwner()[facei] == celli
+                  ? mesh.faceNeighbour()[facei]
+                  : mesh.faceOwner()[facei];
+            }
+        }
+
+        entry& e = entries_[&p];
+        e.direction = direction;
+        e.from = from;
+        entrants[celli].append({&p, depth, volume});
+
+        if (from >= 0)
+        {
+            startVolume[from] += volume;
+        }
+    }
+
+    startFraction_ = startVolume/mesh.V();
+
+    // Each cell takes its deepest entrants up to close pack
+    forAll(entrants, celli)
+    {
+        DynamicList<entrant>& list = entrants[celli];
+        if (list.empty())
+        {
+            continue;
+        }
+
+        std::stable_sort
+        (
+            list.begin(),
+            list.end(),
+            [](const entrant& a, const entrant& b)
+            {
+                return a.depth > b.depth;
+            }
+        );
+
+        // Room up to close pack
+        scalar room =
+            closePackFraction*mesh.V()[celli] - startVolume[celli];
+
+        for (const entrant& candidate : list)
+        {
+            if (candidate.volume <= room)
+            {
+                room -= candidate.volume;
+                entries_[candidate.parcel].admitted = true;
+            }
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::ParcelEntries<CloudType>::recordCells(const CloudType& cloud)
+{
+    lastCells_.clear();
+    lastCells_.resize(2*cloud.size());
+
+    for (const parcelType& p : cloud)
+    {
+        lastCells_.set(labelPair(p.origProc(), p.origId()), p.cell());
+    }
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::ParcelEntries<CloudType>::exitDistance
+(
+    const fvMesh& mesh,
+    const label celli,
+    const point& start,
+    const vector& direction
+)
+{
+    scalar distance = GREAT;
+
+    for (const label facei : mesh.cells()[celli])
+    {
+        vector n = mesh.faceAreas()[facei]/mag(mesh.faceAreas()[facei]);
+        if (mesh.faceOwner()[facei] != celli)
+        {
+            n = -n;
+        }
+
+        const scalar along = direction & n;
+        if (along > SMALL)
+        {
+            distance =
+                min
+                (
+                    distance,
+                    max(((mesh.faceCentres()[facei] - start) & n)/along, 0)
+                );
+        }
+    }
+
+    return distance;
+}
+
+
+template<class CloudType>
+Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
+(
+    const fvMesh& mesh,
+    const parcelType& p,
+    const vector& dU,
+    const scalar deltaT
+) const
+{
+    const point x = p.position();
+    const label celli = p.cell();
+    const entry* e = find(p);
+
+    if (e && !e->admitted && e->from >= 0)
+    {
+        // Refused: back across the face it came in through, not beyond
+        // the cell it came from
+        const vector back = -e->direction;
+        const scalar toFace = exitDistance(mesh, celli, x, back);
+        const scalar across =
+            exitDistance(mesh, e->from, x + toFace*back, back);
+
+        const scalar backTravel =
+            min
+            (
+                max((dU & back)*deltaT, 1.01*toFace),
+                toFace + 0.99*across
+            );
+
+        return backTravel/deltaT*back;
+    }
+
+    // Otherwise the correction move stays in the parcel's cell
+    const scalar travel = mag(dU)*deltaT;
+    if (travel <= VSMALL)
+    {
+        return dU;
+    }
+
+    const scalar room = 0.99*exitDistance(mesh, celli, x, dU/mag(dU));
+
+    return travel > room ? dU*room/travel : dU;
+}
+
+
+template<class CloudType>
+void Foam::ParcelEntries<CloudType>::clear()
+{
+    entries_.clear();
+    startFraction_.clear();
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,20 @@
+#!/bin/bash
+# badInput-packingCoeffs <runDir>: coloringFunction with e1 = 1.5, then
+# with impulse sideways -> FatalIOError naming the keyword and the allowed
+# range or names, exit status 1, no crash (mppicPimpleFoam).
+. "${0%/*}/badInputFunctions"
+runDir="${1:?}"
+prepareCase "$runDir/case"
+props="$runDir/case/constant/kinematicCloudProperties"
+setEntry "$runDir/case" constant/kinematicCloudProperties \
+    subModels/packingModel coloringFunction
+setEntry "$runDir/case" constant/kinematicCloudProperties \
+    subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; e1 1.5; }"
+runBroken "$runDir/case" mppicPimpleFoam
+check fatal "$runDir/case/log.broken" $rc "e1" "1.5" "[0, 1]" || exit 1
+
+setEntry "$runDir/case" constant/kinematicCloudProperties \
+    subModels/coloringFunctionCoeffs \
+    "{ closePackFraction 0.6; impulse sideways; }"
+runBroken "$runDir/case" mppicPimpleFoam
+check fatal "$runDir/case/log.broken" $rc "sideways" "impulse" "neighbour"

@@ -1,0 +1,50 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# sedimentation <runDir>
+# tutorials/verification/sedimentation with coloringFunction (1 s, the full
+# case, about 50 s): a suspension at solids fraction 0.15 settles into a bed
+# at close pack 0.6, 32 parcels per packed cell. Checks, from the packing
+# monitor (every step) and the final field:
+#   - the gas fraction never falls below 0;
+#   - the final bed height is within 3 % of the inventory height
+#     V_solids/(alpha_cp*A) = 5.625e-6/(0.6*0.05*0.005) = 0.0375 m;
+#   - the cloud mass at the end equals the seeded solids volume * 2500;
+#   - regression guard: the largest solids fraction (cell = the model's
+#     averaging here) stays at or below 1.07*alpha_cp = 0.642, the level
+#     reached now (1.0625*alpha_cp). Issue 3's target is 1.03*alpha_cp
+#     (max(1.03*alpha_cp, alpha_cp + one parcel) = 0.619): not met yet.
+#------------------------------------------------------------------------------
+runDir="${1:?usage: sedimentation.sh <runDir>}"
+. "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
+
+copyTutorial verification/sedimentation "$runDir/case"
+runAllrun "$runDir/case" || exit 1
+
+cd "$runDir/case" || exit 1
+/usr/bin/python3 sedimentationResults.py --label coloringFunction
+status=0
+/usr/bin/python3 - <<'PY' || status=1
+import math, sys
+sys.path.insert(0, ".")
+from sedimentationResults import read_monitor, bed_profile, latest_time, \
+    surface_height, seeded_solids_volume
+cp, rows = read_monitor(".")
+failures = 0
+def check(ok, what):
+    global failures
+    print(("PASS " if ok else "FAIL ") + what)
+    failures += not ok
+min_gas = min(r[6] for r in rows)
+check(min_gas >= 0, "gas fraction never below 0 (min %.4f)" % min_gas)
+ys, prof, dy, _, _ = bed_profile(".", latest_time("."))
+h = surface_height(ys, prof, 0.5*cp, dy)
+check(abs(h/0.0375 - 1) <= 0.03, "bed height %.4f m within 3 %% of 0.0375 m" % h)
+mass = rows[-1][2]
+check(abs(mass/(seeded_solids_volume(".")*2500) - 1) < 1e-9,
+      "cloud mass %.10g kg = seeded volume * 2500" % mass)
+max_cell = max(r[4] for r in rows)
+check(max_cell <= 1.07*cp, "max solids fraction %.4f <= 1.07*alpha_cp "
+      "(regression guard; target 1.03)" % max_cell)
+sys.exit(1 if failures else 0)
+PY
+exit $status

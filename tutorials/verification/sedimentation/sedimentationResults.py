@@ -1,0 +1,180 @@
+#!/usr/bin/python3
+"""Results of the sedimentation case: packing bounds and bed height.
+
+Usage:
+    sedimentationResults.py [--case DIR] [--label NAME] [--check] [--plot]
+
+Reads
+  postProcessing/packingMonitor/0/packingMonitor.dat   (every step)
+  <latest time>/alpha.kinematicCloud and C             (cell solids fraction,
+                                                        cell centres)
+  constant/seededParcels                               (seeded solids volume)
+and prints one table row:
+  - max alpha_s (averaged): the largest value over all steps of the solids
+    fraction as the cloud's averaging method gives it (the field the packing
+    model works on; cell values for averagingMethod basic);
+  - max alpha_s (cell): the same for the cell solids fraction;
+  - min gas fraction: 1 - max alpha_s (cell), over all steps;
+  - bed height: where the row-averaged solids fraction of the final field
+    falls through half the close-pack fraction (linear between row centres),
+    against the inventory height  H = V_solids/(alpha_cp*A)  with A the
+    column's cross-section;
+and the bounds of the verification:
+  - every step: max alpha_s <= max(1.03*alpha_cp, alpha_cp + V_parcel/V_cell)
+    (the second term is one parcel: a cell-based field moves in steps of one
+    parcel), gas fraction >= 0;
+  - final bed height within 3 % of H.
+With --check the exit status is 1 when a bound is not met. With --plot it
+writes sedimentation_<label>.png (max alpha_s against time, final profile).
+"""
+import argparse
+import math
+import os
+import re
+import sys
+
+
+def read_monitor(case):
+    path = os.path.join(case, "postProcessing", "packingMonitor", "0",
+                        "packingMonitor.dat")
+    close_pack = None
+    rows = []
+    for line in open(path):
+        if line.startswith("#"):
+            m = re.match(r"#\s*closePackFraction\s*:\s*(\S+)", line)
+            if m:
+                close_pack = float(m.group(1))
+            continue
+        if line.strip():
+            rows.append([float(v) for v in line.split()])
+    return close_pack, rows
+
+
+def read_internal(path):
+    text = open(path).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\((.*?)\)\s*;",
+                  text, re.S)
+    if m is None:
+        raise RuntimeError("no nonuniform internalField in " + path)
+    if m.group(1) == "vector":
+        return [tuple(float(c) for c in t) for t in
+                re.findall(r"\(([^()]+?)\s+([^()]+?)\s+([^()]+?)\)", m.group(3))]
+    return [float(v) for v in m.group(3).split()]
+
+
+def latest_time(case):
+    times = []
+    for d in os.listdir(case):
+        try:
+            times.append((float(d), d))
+        except ValueError:
+            pass
+    return max(times)[1]
+
+
+def seeded_solids_volume(case):
+    text = open(os.path.join(case, "constant", "seededParcels")).read()
+    return float(re.search(r"solidsVolume\s+([^;]+);", text).group(1))
+
+
+def bed_profile(case, time):
+    alpha = read_internal(os.path.join(case, time, "alpha.kinematicCloud"))
+    centres = read_internal(os.path.join(case, time, "C"))
+    rows = {}
+    for a, c in zip(alpha, centres):
+        rows.setdefault(round(c[1], 9), []).append((a, c))
+    ys = sorted(rows)
+    profile = [sum(a for a, _ in rows[y])/len(rows[y]) for y in ys]
+    dy = ys[1] - ys[0]
+    xs = [c[0] for _, c in rows[ys[0]]]
+    zs = [c[2] for _, c in rows[ys[0]]]
+    nx, nz = len(set(round(x, 9) for x in xs)), len(set(round(z, 9) for z in zs))
+    dx = (max(xs) - min(xs))/(nx - 1) if nx > 1 else None
+    dz = (max(zs) - min(zs))/(nz - 1) if nz > 1 else None
+    return ys, profile, dy, (nx, dx, min(xs)), (nz, dz, min(zs))
+
+
+def surface_height(ys, profile, level, dy):
+    top = max(j for j, a in enumerate(profile) if a >= level)
+    if top + 1 >= len(profile):
+        return ys[top] + dy/2
+    a0, a1 = profile[top], profile[top + 1]
+    return ys[top] + (a0 - level)/(a0 - a1)*dy
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--case", default=".")
+    parser.add_argument("--label", default="coloringFunction")
+    parser.add_argument("--check", action="store_true")
+    parser.add_argument("--plot", action="store_true")
+    parser.add_argument("--width", type=float, default=0.05)
+    parser.add_argument("--depth", type=float, default=0.005)
+    args = parser.parse_args()
+
+    close_pack, rows = read_monitor(args.case)
+    max_avg = max(r[3] for r in rows)
+    max_cell = max(r[4] for r in rows)
+    min_gas = min(r[6] for r in rows)
+
+    time = latest_time(args.case)
+    ys, profile, dy, xinfo, zinfo = bed_profile(args.case, time)
+    area = args.width*args.depth
+    cell_volume = area/(xinfo[0]*zinfo[0])*dy
+    solids = seeded_solids_volume(args.case)
+    n_parcels = rows[-1][1]
+    parcel_fraction = solids/n_parcels/cell_volume
+
+    height = surface_height(ys, profile, 0.5*close_pack, dy)
+    expected = solids/(close_pack*area)
+    height_error = (height - expected)/expected
+
+    bound = max(1.03*close_pack, close_pack + parcel_fraction)
+    ok_pack = max_avg <= bound + 1e-12
+    ok_gas = min_gas >= 0
+    ok_height = abs(height_error) <= 0.03
+
+    print("%-18s %10s %10s %10s %10s %10s %9s" % (
+        "packing model", "max as av", "max as cell", "bound", "min eps_g",
+        "bed H [m]", "H error"))
+    print("%-18s %10.4f %10.4f %10.4f %10.4f %10.4f %8.1f%%" % (
+        args.label, max_avg, max_cell, bound, min_gas, height, 100*height_error))
+    print("close pack %.3f, one parcel = %.4f of a cell, inventory height %.4f m,"
+          " final time %s" % (close_pack, parcel_fraction, expected, time))
+    print("bounds: max alpha_s %s, gas fraction %s, bed height %s" % (
+        "met" if ok_pack else "NOT met", "met" if ok_gas else "NOT met",
+        "met" if ok_height else "NOT met"))
+
+    if args.plot:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+        t = [r[0] for r in rows]
+        ax1.plot(t, [r[3] for r in rows], label="max $\\alpha_s$ (model's averaging)")
+        ax1.plot(t, [r[4] for r in rows], "--", label="max $\\alpha_s$ (cell)")
+        ax1.axhline(close_pack, color="k", lw=0.8, label="close pack")
+        ax1.axhline(bound, color="r", lw=0.8, label="bound")
+        ax1.set_xlabel("t [s]")
+        ax1.set_ylabel("solids fraction")
+        ax1.set_title("sedimentation, %s" % args.label)
+        ax1.legend(fontsize=8)
+        ax2.plot(profile, ys, "o-", ms=3, label="final, row average")
+        ax2.axhline(expected, color="k", lw=0.8, label="inventory height")
+        ax2.axhline(height, color="r", lw=0.8, ls="--", label="bed surface")
+        ax2.axvline(close_pack, color="gray", lw=0.6)
+        ax2.set_xlabel("solids fraction")
+        ax2.set_ylabel("y [m]")
+        ax2.set_ylim(0, 3*expected)
+        ax2.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(args.case, "sedimentation_%s.png" % args.label),
+                    dpi=100)
+
+    if args.check and not (ok_pack and ok_gas and ok_height):
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
