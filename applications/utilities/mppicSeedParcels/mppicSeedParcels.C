@@ -241,6 +241,9 @@ int main(int argc, char *argv[])
     );
     positionsIO.write();
 
+    // Full precision: nParticle sets the seeded solids volume
+    IOstream::defaultPrecision(max(IOstream::defaultPrecision(), 15u));
+
     IOdictionary seeded
     (
         IOobject

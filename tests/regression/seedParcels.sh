@@ -1,0 +1,80 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# seedParcels <runDir>
+# mppicSeedParcels on the 1 x 2 x 0.1 m box (4 x 8 x 1 cells of 0.25 x 0.25
+# x 0.1 m), region box (0 0 0) (1 1 0.1): the 16 cells of the lower half.
+# 10 parcels per cell, solids fraction 0.3, d = 0.01 m. Checks:
+#   - the lattice: target 10*16 = 160 points on the 1 x 1 x 0.1 box;
+#     spacing (0.1/160)^(1/3) = 0.0855 gives nz = round(0.1/0.0855) = 1, then
+#     sqrt(1*1*1/160) = 0.0791 gives ny = round(12.65) = 13 and
+#     nx = round(160/13) = 12: 156 parcels, all in the region, 8-12 per cell;
+#   - nParticle = 0.3*0.1/(156*pi/6*1e-6) = 367.2806379...
+#   - bad input: solidsFraction 1.2, jitter 1, parcelsPerCell 0 and region
+#     sphere each stop with a FatalIOError naming the keyword.
+#------------------------------------------------------------------------------
+runDir="${1:?usage: seedParcels.sh <runDir>}"
+. "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
+
+case="$runDir/box"
+rm -rf "$case"
+cp -r "$MPPIC_PROJECT_DIR/tests/unit/cases/box" "$case"
+blockMesh -case "$case" > "$runDir/log.blockMesh" 2>&1 || exit 1
+
+writeDict()
+{
+    cat > "$case/system/mppicSeedParcelsDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object mppicSeedParcelsDict; }
+region          ${1:-box};
+box             (0 0 0) (1 1 0.1);
+solidsFraction  ${2:-0.3};
+parcelsPerCell  ${3:-10};
+diameter        0.01;
+jitter          ${4:-0.5};
+seed            3;
+DICT
+}
+
+writeDict
+mppicSeedParcels -case "$case" > "$runDir/log.seed" 2>&1 || exit 1
+cat "$runDir/log.seed" | tail -4
+
+/usr/bin/python3 - "$case" <<'PY' || exit 1
+import math, re, sys
+case = sys.argv[1]
+text = open(case + "/constant/kinematicCloudPositions").read()
+pts = [tuple(map(float, t)) for t in
+       re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
+seeded = open(case + "/constant/seededParcels").read()
+nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
+fails = 0
+def check(ok, what):
+    global fails
+    print(("PASS " if ok else "FAIL ") + what)
+    fails += not ok
+check(len(pts) == 156, "156 parcels (%d)" % len(pts))
+check(all(0 <= x <= 1 and 0 <= y <= 1 and 0 <= z <= 0.1 for x, y, z in pts),
+      "all parcels in the region box")
+counts = {}
+for x, y, z in pts:
+    key = (min(int(x/0.25), 3), min(int(y/0.25), 3))
+    counts[key] = counts.get(key, 0) + 1
+check(len(counts) == 16 and all(8 <= c <= 12 for c in counts.values()),
+      "16 cells with 8-12 parcels each: %s" % sorted(counts.values()))
+expected = 0.3*0.1/(156*math.pi/6*1e-6)
+check(abs(nParticle/expected - 1) < 1e-12,
+      "nParticle %.15g = 0.3*0.1/(156*pi/6*1e-6) = %.15g" % (nParticle, expected))
+sys.exit(1 if fails else 0)
+PY
+
+status=0
+for bad in "box 1.2 10 0.5:solidsFraction" "box 0.3 10 1:jitter" \
+           "box 0.3 0 0.5:parcelsPerCell" "sphere 0.3 10 0.5:region"
+do
+    args="${bad%%:*}"
+    keyword="${bad##*:}"
+    writeDict $args
+    mppicSeedParcels -case "$case" > "$runDir/log.bad.$keyword" 2>&1
+    rc=$?
+    check fatal "$runDir/log.bad.$keyword" $rc "$keyword" || status=1
+done
+exit $status
