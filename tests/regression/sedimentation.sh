@@ -9,10 +9,10 @@
 #   - the final bed height is within 3 % of the inventory height
 #     V_solids/(alpha_cp*A) = 5.625e-6/(0.6*0.05*0.005) = 0.0375 m;
 #   - the cloud mass at the end equals the seeded solids volume * 2500;
-#   - regression guard: the largest solids fraction (cell = the model's
-#     averaging here) stays at or below 1.07*alpha_cp = 0.642, the level
-#     reached now (1.0625*alpha_cp). Issue 3's target is 1.03*alpha_cp
-#     (max(1.03*alpha_cp, alpha_cp + one parcel) = 0.619): not met yet.
+#   - at every step, the largest solids fraction of the model's averaging
+#     (basic: the cell solids fraction, which moves in steps of one parcel,
+#     0.01875 of a cell here) is at most
+#     max(1.03*alpha_cp, alpha_cp + one parcel) = max(0.618, 0.61875).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: sedimentation.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -42,9 +42,12 @@ check(abs(h/0.0375 - 1) <= 0.03, "bed height %.4f m within 3 %% of 0.0375 m" % h
 mass = rows[-1][2]
 check(abs(mass/(seeded_solids_volume(".")*2500) - 1) < 1e-9,
       "cloud mass %.10g kg = seeded volume * 2500" % mass)
-max_cell = max(r[4] for r in rows)
-check(max_cell <= 1.07*cp, "max solids fraction %.4f <= 1.07*alpha_cp "
-      "(regression guard; target 1.03)" % max_cell)
+max_avg = max(r[3] for r in rows)
+one_parcel = seeded_solids_volume(".")/rows[-1][1]/0.005**3  # 5 mm cubes
+bound = max(1.03*cp, cp + one_parcel)
+check(abs(one_parcel - 0.01875) < 1e-9, "one parcel = %.6f of a cell" % one_parcel)
+check(max_avg <= bound, "max solids fraction %.6f <= max(1.03*alpha_cp, "
+      "alpha_cp + one parcel) = %.6f at every step" % (max_avg, bound))
 sys.exit(1 if failures else 0)
 PY
 exit $status

@@ -7,7 +7,8 @@ Usage:
 Reads
   postProcessing/packingMonitor/0/packingMonitor.dat   (every step)
   <latest time>/alpha.kinematicCloud and C             (cell solids fraction,
-                                                        cell centres)
+                                                        cell centres; with
+                                                        MPPICFoam 1 - alpha.air)
   constant/seededParcels                               (seeded solids volume)
 and prints one table row:
   - max alpha_s (averaged): the largest value over all steps of the solids
@@ -78,7 +79,12 @@ def seeded_solids_volume(case):
 
 
 def bed_profile(case, time):
-    alpha = read_internal(os.path.join(case, time, "alpha.kinematicCloud"))
+    solids = os.path.join(case, time, "alpha.kinematicCloud")
+    if os.path.exists(solids):
+        alpha = read_internal(solids)
+    else:
+        # stock MPPICFoam writes the gas fraction only
+        alpha = [1 - a for a in read_internal(os.path.join(case, time, "alpha.air"))]
     centres = read_internal(os.path.join(case, time, "C"))
     rows = {}
     for a, c in zip(alpha, centres):

@@ -134,6 +134,7 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
 {
     if (store && impulse_ == impulseType::neighbour)
     {
+        entries_.debug = debug;
         entries_.update
         (
             this->owner(),
@@ -143,6 +144,11 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
     }
     else
     {
+        if (debug && impulse_ == impulseType::neighbour)
+        {
+            entries_.reportGrowth(this->owner(), rules_.closePackFraction());
+        }
+
         // End of the packing step: where each parcel now is
         entries_.clear();
         if (impulse_ == impulseType::neighbour)

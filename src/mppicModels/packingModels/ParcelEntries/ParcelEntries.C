@@ -93,6 +93,11 @@ void Foam::ParcelEntries<CloudType>::update
         const scalar volume = p.nParticle()*p.volume();
         const label celli = p.cell();
 
+        if (debug)
+        {
+            stepCells_[&p] = celli;
+        }
+
         // Where it was: recorded, else guessed from its velocity
         label from = -1;
         vector direction = Zero;
@@ -162,13 +167,14 @@ void Foam::ParcelEntries<CloudType>::update
             }
         );
 
-        // Room up to close pack
+        // Room up to close pack, to the nearest parcel: a cell takes the
+        // parcel count that comes closest to close pack
         scalar room =
             closePackFraction*mesh.V()[celli] - startVolume[celli];
 
         for (const entrant& candidate : list)
         {
-            if (candidate.volume <= room)
+            if (candidate.volume <= room + 0.5*candidate.volume)
             {
                 room -= candidate.volume;
                 entries_[candidate.parcel].admitted = true;
@@ -227,6 +233,37 @@ Foam::scalar Foam::ParcelEntries<CloudType>::exitDistance
 
 
 template<class CloudType>
+Foam::scalar Foam::ParcelEntries<CloudType>::entryDistance
+(
+    const fvMesh& mesh,
+    const label celli,
+    const point& start,
+    const vector& direction
+)
+{
+    scalar distance = 0;
+
+    for (const label facei : mesh.cells()[celli])
+    {
+        vector n = mesh.faceAreas()[facei]/mag(mesh.faceAreas()[facei]);
+        if (mesh.faceOwner()[facei] != celli)
+        {
+            n = -n;
+        }
+
+        const scalar along = direction & n;
+        if (along < -SMALL)
+        {
+            distance =
+                max(distance, ((mesh.faceCentres()[facei] - start) & n)/along);
+        }
+    }
+
+    return distance;
+}
+
+
+template<class CloudType>
 Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
 (
     const fvMesh& mesh,
@@ -241,18 +278,19 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
 
     if (e && !e->admitted && e->from >= 0)
     {
-        // Refused: back across the face it came in through, not beyond
-        // the cell it came from
-        const vector back = -e->direction;
-        const scalar toFace = exitDistance(mesh, celli, x, back);
-        const scalar across =
-            exitDistance(mesh, e->from, x + toFace*back, back);
+        // Refused: back into the cell it came from, aiming at its centre
+        // (a face or an edge/corner neighbour), and not beyond it
+        vector back = mesh.cellCentres()[e->from] - x;
+        back /= max(mag(back), VSMALL);
+
+        const scalar enter = entryDistance(mesh, e->from, x, back);
+        const scalar leave = exitDistance(mesh, e->from, x, back);
 
         const scalar backTravel =
             min
             (
-                max((dU & back)*deltaT, 1.01*toFace),
-                toFace + 0.99*across
+                max((dU & back)*deltaT, enter + 0.01*(leave - enter)),
+                enter + 0.99*(leave - enter)
             );
 
         return backTravel/deltaT*back;
@@ -272,8 +310,82 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
 
 
 template<class CloudType>
+void Foam::ParcelEntries<CloudType>::reportGrowth
+(
+    const CloudType& cloud,
+    const scalar closePackFraction
+) const
+{
+    const fvMesh& mesh = cloud.mesh();
+    scalarField endVolume(mesh.nCells(), Zero);
+    for (const parcelType& p : cloud)
+    {
+        endVolume[p.cell()] += p.nParticle()*p.volume();
+    }
+    const scalarField endFraction(endVolume/mesh.V());
+
+    auto grew = [&](const label celli)
+    {
+        const scalar tolerance = 1e-9*closePackFraction;
+        return
+            endFraction[celli] > closePackFraction + tolerance
+         && endFraction[celli] > startFraction_[celli] + tolerance;
+    };
+
+    label nCells = 0;
+    forAll(endFraction, celli)
+    {
+        nCells += grew(celli);
+    }
+    if (!nCells)
+    {
+        return;
+    }
+
+    label admitted = 0, refusedStayed = 0, returned = 0, movedIn = 0;
+    for (const parcelType& p : cloud)
+    {
+        if (!grew(p.cell()))
+        {
+            continue;
+        }
+        const entry* e = find(p);
+        const auto step = stepCells_.find(&p);
+        const label stepCell = step == stepCells_.end() ? -1 : step->second;
+
+        if (stepCell == p.cell())
+        {
+            if (e && e->admitted) ++admitted;
+            else if (e) ++refusedStayed;
+        }
+        else if (e && !e->admitted && e->from == p.cell())
+        {
+            ++returned;
+        }
+        else
+        {
+            ++movedIn;
+            Pout<< "ParcelEntries: parcel " << p.origId() << " moved by the"
+                << " correction from cell " << stepCell << " into cell "
+                << p.cell() << (e ? " (an entrant" : " (not an entrant")
+                << (e && e->admitted ? ", admitted" : "")
+                << ", from " << (e ? e->from : -2)
+                << ") at " << p.position() << " U " << p.U()
+                << " UCorrect " << p.UCorrect() << endl;
+        }
+    }
+
+    Pout<< "ParcelEntries: " << nCells << " cells grew above close pack;"
+        << " their parcels: admitted " << admitted << ", refused but stayed "
+        << refusedStayed << ", returned " << returned << ", moved in by the"
+        << " correction " << movedIn << endl;
+}
+
+
+template<class CloudType>
 void Foam::ParcelEntries<CloudType>::clear()
 {
+    stepCells_.clear();
     entries_.clear();
     startFraction_.clear();
 }
