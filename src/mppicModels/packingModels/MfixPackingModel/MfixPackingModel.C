@@ -5,6 +5,7 @@
 
 #include "MfixPackingModel.H"
 #include "wallPolyPatch.H"
+#include "cellFaceGeometry.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -195,11 +196,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
 
     for (const label facei : mesh.cells()[celli])
     {
-        vector n = mesh.faceAreas()[facei]/mag(mesh.faceAreas()[facei]);
-        if (mesh.faceOwner()[facei] != celli)
-        {
-            n = -n;
-        }
+        const vector n = cellFaceGeometry::outwardNormal(mesh, celli, facei);
 
         const scalar approach = p.U() & n;
         if (approach > bestApproach)
@@ -218,9 +215,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
     if (mesh.isInternalFace(towardFace))
     {
         const label nbr =
-            mesh.faceOwner()[towardFace] == celli
-          ? mesh.faceNeighbour()[towardFace]
-          : mesh.faceOwner()[towardFace];
+            cellFaceGeometry::cellAcross(mesh, celli, towardFace);
 
         ahead.found = true;
         ahead.value = cellValues_[nbr];

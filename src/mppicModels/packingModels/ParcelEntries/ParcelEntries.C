@@ -5,6 +5,7 @@
 
 #include "ParcelEntries.H"
 #include "coupledPolyPatch.H"
+#include "cellFaceGeometry.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
@@ -39,11 +40,7 @@ Foam::label Foam::ParcelEntries<CloudType>::crossedFace
             continue;
         }
 
-        vector n = mesh.faceAreas()[facei]/mag(mesh.faceAreas()[facei]);
-        if (mesh.faceOwner()[facei] != celli)
-        {
-            n = -n;
-        }
+        const vector n = cellFaceGeometry::outwardNormal(mesh, celli, facei);
 
         const scalar Un = p.U() & n;
         if (Un < 0)
@@ -129,9 +126,7 @@ void Foam::ParcelEntries<CloudType>::update
             if (mesh.isInternalFace(facei))
             {
                 from =
-                    mesh.faceOwner()[facei] == celli
-                  ? mesh.faceNeighbour()[facei]
-                  : mesh.faceOwner()[facei];
+                    cellFaceGeometry::cellAcross(mesh, celli, facei);
             }
         }
 
@@ -210,11 +205,7 @@ Foam::scalar Foam::ParcelEntries<CloudType>::exitDistance
 
     for (const label facei : mesh.cells()[celli])
     {
-        vector n = mesh.faceAreas()[facei]/mag(mesh.faceAreas()[facei]);
-        if (mesh.faceOwner()[facei] != celli)
-        {
-            n = -n;
-        }
+        const vector n = cellFaceGeometry::outwardNormal(mesh, celli, facei);
 
         const scalar along = direction & n;
         if (along > SMALL)
@@ -245,11 +236,7 @@ Foam::scalar Foam::ParcelEntries<CloudType>::entryDistance
 
     for (const label facei : mesh.cells()[celli])
     {
-        vector n = mesh.faceAreas()[facei]/mag(mesh.faceAreas()[facei]);
-        if (mesh.faceOwner()[facei] != celli)
-        {
-            n = -n;
-        }
+        const vector n = cellFaceGeometry::outwardNormal(mesh, celli, facei);
 
         const scalar along = direction & n;
         if (along < -SMALL)
