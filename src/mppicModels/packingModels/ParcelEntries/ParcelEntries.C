@@ -85,6 +85,10 @@ void Foam::ParcelEntries<CloudType>::update
     };
     List<DynamicList<entrant>> entrants(mesh.nCells());
 
+    // Recorded parcels not seen here any more left for another processor
+    HashTable<Tuple2<label, scalar>, labelPair, labelPair::Hash<>>
+        departed(lastCells_);
+
     for (const parcelType& p : cloud)
     {
         const scalar volume = p.nParticle()*p.volume();
@@ -100,10 +104,12 @@ void Foam::ParcelEntries<CloudType>::update
         vector direction = Zero;
         scalar depth = 0;
 
-        const auto last = lastCells_.cfind(labelPair(p.origProc(), p.origId()));
+        const labelPair key(p.origProc(), p.origId());
+        const auto last = lastCells_.cfind(key);
         if (last.found())
         {
-            from = *last;
+            departed.erase(key);
+            from = (*last).first();
             if (from == celli)
             {
                 startVolume[celli] += volume;
@@ -139,6 +145,11 @@ void Foam::ParcelEntries<CloudType>::update
         {
             startVolume[from] += volume;
         }
+    }
+
+    forAllConstIters(departed, iter)
+    {
+        startVolume[iter.val().first()] += iter.val().second();
     }
 
     startFraction_ = startVolume/mesh.V();
@@ -187,7 +198,11 @@ void Foam::ParcelEntries<CloudType>::recordCells(const CloudType& cloud)
 
     for (const parcelType& p : cloud)
     {
-        lastCells_.set(labelPair(p.origProc(), p.origId()), p.cell());
+        lastCells_.set
+        (
+            labelPair(p.origProc(), p.origId()),
+            Tuple2<label, scalar>(p.cell(), p.nParticle()*p.volume())
+        );
     }
 }
 
@@ -278,6 +293,24 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
             (
                 max((dU & back)*deltaT, enter + 0.01*(leave - enter)),
                 enter + 0.99*(leave - enter)
+            );
+
+        return backTravel/deltaT*back;
+    }
+
+    if (e && !e->admitted)
+    {
+        // Refused, from a cell on another processor: back out of this
+        // cell the way it came in, a little into the cell beyond
+        const vector back = -e->direction;
+        const scalar toFace = exitDistance(mesh, celli, x, back);
+        const scalar cellSize = Foam::cbrt(mesh.V()[celli]);
+
+        const scalar backTravel =
+            min
+            (
+                max((dU & back)*deltaT, toFace + 0.01*cellSize),
+                toFace + 0.49*cellSize
             );
 
         return backTravel/deltaT*back;
