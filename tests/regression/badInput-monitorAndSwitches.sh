@@ -1,0 +1,30 @@
+#!/bin/bash
+# badInput-monitorAndSwitches <runDir>: a packingMonitor naming a cloud that
+# does not exist, one with closePackFraction 1.5, and coloringFunction with
+# case1a maybe -> FatalIOError naming the keyword (and the range), exit
+# status 1, no crash (mppicPimpleFoam).
+. "${0%/*}/badInputFunctions"
+runDir="${1:?}"
+prepareCase "$runDir/case"
+case="$runDir/case"
+status=0
+
+setEntry "$case" system/controlDict functions/monitor \
+    "{ type packingMonitor; libs (\"libmppicModels.so\"); cloud noSuchCloud; }"
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "cloud" "noSuchCloud" || status=1
+
+setEntry "$case" system/controlDict functions/monitor \
+    "{ type packingMonitor; libs (\"libmppicModels.so\"); closePackFraction 1.5; }"
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "closePackFraction" "1.5" "(0, 1)" || status=1
+
+foamDictionary "$case/system/controlDict" -entry functions/monitor -remove > /dev/null
+setEntry "$case" constant/kinematicCloudProperties \
+    subModels/packingModel coloringFunction
+setEntry "$case" constant/kinematicCloudProperties \
+    subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; case1a maybe; }"
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "case1a" "maybe" || status=1
+
+exit $status
