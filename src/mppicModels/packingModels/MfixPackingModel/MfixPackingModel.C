@@ -274,35 +274,37 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheFields
     uAverage_ =
         &mesh.lookupObject<AveragingMethod<vector>>(cloudName + ":uAverage");
 
-    packingField_ =
-        AveragingMethod<scalar>::New
-        (
-            IOobject
-            (
-                cloudName + ":packingField",
-                mesh.time().timeName(),
-                mesh
-            ),
-            this->owner().solution().dict(),
-            mesh
-        );
-
-    // f(alpha) at every averaging datum (cells or points)
-    tmp<FieldField<Field, scalar>> tvalues
-    (
-        new FieldField<Field, scalar>(*volumeAverage_)
-    );
-    FieldField<Field, scalar>& values = tvalues.ref();
-    forAll(values, i)
+    if (needsPackingField())
     {
-        forAll(values[i], j)
-        {
-            values[i][j] = packingFieldValue(values[i][j]);
-        }
-    }
+        packingField_ =
+            AveragingMethod<scalar>::New
+            (
+                IOobject
+                (
+                    cloudName + ":packingField",
+                    mesh.time().timeName(),
+                    mesh
+                ),
+                this->owner().solution().dict(),
+                mesh
+            );
 
-    // Assignment also updates the gradient used by interpolateGrad
-    packingField_() = tvalues;
+        // f(alpha) at every averaging datum (cells or points)
+        tmp<FieldField<Field, scalar>> tvalues
+        (
+            new FieldField<Field, scalar>(*volumeAverage_)
+        );
+        for (Field<scalar>& values : tvalues.ref())
+        {
+            for (scalar& value : values)
+            {
+                value = packingFieldValue(value);
+            }
+        }
+
+        // Assignment also updates the gradient used by interpolateGrad
+        packingField_() = tvalues;
+    }
 
     if (needsCellValues())
     {
