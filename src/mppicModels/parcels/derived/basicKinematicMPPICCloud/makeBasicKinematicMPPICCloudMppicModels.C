@@ -12,9 +12,11 @@ Description
 #include "basicKinematicMPPICCloud.H"
 
 #include "makeMppicParcelPackingModels.H"
+#include "makeMppicParcelForces.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 makeMppicParcelPackingModels(basicKinematicMPPICCloud);
+makeMppicParcelForces(basicKinematicMPPICCloud);
 
 // ************************************************************************* //

@@ -1,0 +1,150 @@
+/*---------------------------------------------------------------------------*\
+    mppicModels unit tests
+-------------------------------------------------------------------------------
+Application
+    Test-dragCorrelations
+
+Description
+    The drag correlations K = beta/alpha_s of dragCorrelations against the
+    formulas written out here, in their textbook form (Cd and the
+    superficial Reynolds number, not the Cd*Re form of the library), at a
+    dilute, an intermediate and a dense gas fraction:
+        d = 1e-4 m, rho_g = 1.2 kg/m3, mu_g = 1.8e-5 Pa s, slip w = 0.5 m/s
+        ag = 0.99, 0.85, 0.45;  Re = ag*rho_g*w*d/mu_g
+        Wen-Yu:  Cd = 24/Re*(1 + 0.15*Re^0.687) (0.44 above Re = 1000)
+                 K = 0.75*Cd*ag*rho_g*w/d*ag^-2.65
+        Ergun:   K = 150*(1 - ag)*mu_g/(ag*d^2) + 1.75*rho_g*w/d
+        constant Cd = 1: K = 0.75*Cd*rho_g*w/d = 4500
+    plus Wen-Yu above Re = 1000 (w = 200 m/s, ag = 0.9: Re = 1200) and the
+    Gidaspow blend weight: 0.5 at the switch, atan(+-262.5*0.01)/pi + 0.5
+    one hundredth either side, so that the blended K is continuous.
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "IOstreams.H"
+#include "mathematicalConstants.H"
+#include "dragCorrelations.H"
+#include "unitTest.H"
+
+using namespace Foam;
+using namespace Foam::unitTest;
+
+const scalar d = 1e-4;
+const scalar rhog = 1.2;
+const scalar mug = 1.8e-5;
+const scalar w = 0.5;
+
+
+scalar handWenYu(const scalar ag, const scalar slip)
+{
+    const scalar Re = ag*rhog*slip*d/mug;
+    const scalar Cd = Re < 1000 ? 24/Re*(1 + 0.15*std::pow(Re, 0.687)) : 0.44;
+    return 0.75*Cd*ag*rhog*slip/d*std::pow(ag, -2.65);
+}
+
+
+scalar handErgun(const scalar ag)
+{
+    return 150*(1 - ag)*mug/(ag*d*d) + 1.75*rhog*w/d;
+}
+
+
+int main(int argc, char *argv[])
+{
+    argList::noParallel();
+    argList args(argc, argv, false, false, false);
+
+    for (const scalar ag : {0.99, 0.85, 0.45})
+    {
+        const string at = " at ag = " + Foam::name(ag);
+        checkClose
+        (
+            "Wen-Yu K" + at,
+            dragCorrelations::wenYuK(ag, w, d, rhog, mug),
+            handWenYu(ag, w)
+        );
+        checkClose
+        (
+            "Ergun K" + at,
+            dragCorrelations::ergunK(ag, w, d, rhog, mug),
+            handErgun(ag)
+        );
+    }
+
+    checkClose
+    (
+        "Wen-Yu K above Re = 1000 (Cd = 0.44)",
+        dragCorrelations::wenYuK(0.9, 200, d, rhog, mug),
+        handWenYu(0.9, 200)
+    );
+    checkClose
+    (
+        "Wen-Yu Cd(1200) = 0.44",
+        dragCorrelations::wenYuCd(1200),
+        0.44
+    );
+    checkClose
+    (
+        "Wen-Yu Cd(1) = 24*1.15",
+        dragCorrelations::wenYuCd(1),
+        27.6
+    );
+    checkClose
+    (
+        "constant Cd = 1: K = 0.75*1.2*0.5/1e-4",
+        dragCorrelations::constantCdK(1, w, d, rhog),
+        4500
+    );
+
+    const scalar pi = constant::mathematical::pi;
+    checkClose
+    (
+        "blend weight at the switch",
+        dragCorrelations::gidaspowBlendWeight(0.8, 0.8),
+        0.5
+    );
+    checkClose
+    (
+        "blend weight 0.01 above the switch",
+        dragCorrelations::gidaspowBlendWeight(0.81, 0.8),
+        std::atan(2.625)/pi + 0.5,
+        1e-10
+    );
+    checkClose
+    (
+        "blend weight 0.01 below the switch",
+        dragCorrelations::gidaspowBlendWeight(0.79, 0.8),
+        std::atan(-2.625)/pi + 0.5,
+        1e-10
+    );
+
+    // Continuity of the blended K across the switch
+    auto blended = [&](const scalar ag)
+    {
+        const scalar phi = dragCorrelations::gidaspowBlendWeight(ag, 0.8);
+        return
+            (1 - phi)*dragCorrelations::ergunK(ag, w, d, rhog, mug)
+          + phi*dragCorrelations::wenYuK(ag, w, d, rhog, mug);
+    };
+    const scalar jump = mag(blended(0.8 + 1e-9) - blended(0.8 - 1e-9));
+    checkTrue
+    (
+        "blended K continuous at the switch (jump "
+      + Foam::name(jump) + " < 1e-6 of K)",
+        jump < 1e-6*blended(0.8)
+    );
+    const scalar rawJump =
+        mag(handWenYu(0.8, w) - handErgun(0.8))/handErgun(0.8);
+    checkTrue
+    (
+        "unblended Ergun/Wen-Yu differ at the switch (relative "
+      + Foam::name(rawJump) + " > 0.01)",
+        rawJump > 0.01
+    );
+
+    return summary();
+}
+
+
+// ************************************************************************* //
