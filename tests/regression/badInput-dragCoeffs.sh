@@ -1,14 +1,17 @@
 #!/bin/bash
 # badInput-dragCoeffs <runDir>: constantCdDrag with Cd = -1,
-# linearRelaxationDrag with C = -5, GidaspowDrag with switchFraction 1.2
-# -> FatalIOError naming the keyword and its range, exit status 1, no crash.
+# linearRelaxationDrag with C = -5, GidaspowDrag with switchFraction 1.2,
+# with blend maybe, and with alphac naming no field -> FatalError naming
+# the keyword and its range (or the field), exit status 1, no crash.
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
 prepareCase "$runDir/case"
 status=0
 for bad in "constantCdDrag { Cd -1; }:Cd:[0, inf)" \
            "linearRelaxationDrag { C -5; }:C:[0, inf)" \
-           "GidaspowDrag { alphac alpha.air; switchFraction 1.2; }:switchFraction:(0, 1)"
+           "GidaspowDrag { alphac alpha.air; switchFraction 1.2; }:switchFraction:(0, 1)" \
+           "GidaspowDrag { alphac alpha.air; blend maybe; }:blend:maybe" \
+           "GidaspowDrag { alphac alpha.gas; }:alphac:alpha.gas"
 do
     force="${bad%%:*}"
     rest="${bad#*:}"
@@ -17,7 +20,7 @@ do
     setEntry "$runDir/case" constant/kinematicCloudProperties \
         subModels/particleForces "{ $force gravity; }"
     runBroken "$runDir/case" mppicPimpleFoam
-    check fatal "$runDir/case/log.broken" $rc "keyword $keyword" "$range" \
+    check fatal "$runDir/case/log.broken" $rc "$keyword" "$range" \
         || status=1
 done
 exit $status

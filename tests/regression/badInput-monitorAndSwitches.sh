@@ -2,7 +2,7 @@
 # badInput-monitorAndSwitches <runDir>: a packingMonitor naming a cloud that
 # does not exist, one with closePackFraction 1.5, and coloringFunction with
 # case1a maybe -> FatalIOError naming the keyword (and the range), exit
-# status 1, no crash (mppicPimpleFoam).
+# status 1, no crash (mppicPimpleFoam); likewise capacityLimit perhaps.
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
 prepareCase "$runDir/case"
@@ -26,5 +26,11 @@ setEntry "$case" constant/kinematicCloudProperties \
     subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; case1a maybe; }"
 runBroken "$case" mppicPimpleFoam
 check fatal "$case/log.broken" $rc "case1a" "maybe" || status=1
+
+setEntry "$case" constant/kinematicCloudProperties \
+    subModels/coloringFunctionCoeffs \
+    "{ closePackFraction 0.6; capacityLimit perhaps; }"
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "capacityLimit" "perhaps" || status=1
 
 exit $status

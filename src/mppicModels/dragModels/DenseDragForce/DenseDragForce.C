@@ -5,6 +5,29 @@
 
 #include "DenseDragForce.H"
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::volScalarField& Foam::DenseDragForce<CloudType>::lookupAlphac
+(
+    const fvMesh& mesh,
+    const dictionary& coeffs
+)
+{
+    const word name(coeffs.getWord("alphac"));
+
+    if (!mesh.foundObject<volScalarField>(name))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Dictionary " << coeffs.name() << ", keyword alphac: no gas"
+            << " volume-fraction field " << name << "; volScalarFields: "
+            << mesh.sortedNames<volScalarField>() << exit(FatalIOError);
+    }
+
+    return mesh.lookupObject<volScalarField>(name);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -17,10 +40,7 @@ Foam::DenseDragForce<CloudType>::DenseDragForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, forceType, true),
-    alphac_
-    (
-        mesh.lookupObject<volScalarField>(this->coeffs().getWord("alphac"))
-    )
+    alphac_(lookupAlphac(mesh, this->coeffs()))
 {}
 
 
