@@ -26,7 +26,8 @@ Foam::ConstantCdDragForce<CloudType>::ConstantCdDragForce
             "Cd",
             mppicCoefficients::bounds::atLeast(0)
         )
-    )
+    ),
+    feedback_(this->coeffs().lookupOrDefault("feedback", true))
 {}
 
 
@@ -37,11 +38,48 @@ Foam::ConstantCdDragForce<CloudType>::ConstantCdDragForce
 )
 :
     ParticleForce<CloudType>(df),
-    Cd_(df.Cd_)
+    Cd_(df.Cd_),
+    feedback_(df.feedback_)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::scalar Foam::ConstantCdDragForce<CloudType>::Sp
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar mass
+) const
+{
+    return
+        mass
+       *dragCorrelations::constantCdK(Cd_, mag(td.Uc() - p.U()), p.d(), td.rhoc())
+       /p.rho();
+}
+
+
+template<class CloudType>
+Foam::forceSuSp Foam::ConstantCdDragForce<CloudType>::calcNonCoupled
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar dt,
+    const scalar mass,
+    const scalar Re,
+    const scalar muc
+) const
+{
+    // OpenFOAM integrates only the explicit part of non-coupled forces
+    // (KinematicParcel::calcVelocity): the drag as Su = Sp*(u_g - u_p)
+    if (feedback_)
+    {
+        return forceSuSp(Zero, 0);
+    }
+    return forceSuSp(Sp(p, td, mass)*(td.Uc() - p.U()), 0);
+}
+
 
 template<class CloudType>
 Foam::forceSuSp Foam::ConstantCdDragForce<CloudType>::calcCoupled
@@ -54,7 +92,7 @@ Foam::forceSuSp Foam::ConstantCdDragForce<CloudType>::calcCoupled
     const scalar muc
 ) const
 {
-    return forceSuSp(Zero, mass*dragCorrelations::constantCdK(Cd_, mag(td.Uc() - p.U()), p.d(), td.rhoc())/p.rho());
+    return forceSuSp(Zero, feedback_ ? Sp(p, td, mass) : 0);
 }
 
 
