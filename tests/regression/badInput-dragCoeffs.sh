@@ -1,7 +1,8 @@
 #!/bin/bash
 # badInput-dragCoeffs <runDir>: constantCdDrag with Cd = -1,
 # linearRelaxationDrag with C = -5, GidaspowDrag with switchFraction 1.2,
-# with blend maybe, and with alphac naming no field -> FatalError naming
+# with blend maybe, constantCdDrag with feedback maybe, and GidaspowDrag
+# with alphac naming no field -> FatalError naming
 # the keyword and its range (or the field), exit status 1, no crash.
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
@@ -11,6 +12,7 @@ for bad in "constantCdDrag { Cd -1; }:Cd:[0, inf)" \
            "linearRelaxationDrag { C -5; }:C:[0, inf)" \
            "GidaspowDrag { alphac alpha.air; switchFraction 1.2; }:switchFraction:(0, 1)" \
            "GidaspowDrag { alphac alpha.air; blend maybe; }:blend:maybe" \
+           "constantCdDrag { Cd 1; feedback maybe; }:feedback:maybe" \
            "GidaspowDrag { alphac alpha.gas; }:alphac:alpha.gas"
 do
     force="${bad%%:*}"
