@@ -9,8 +9,9 @@
 #     sqrt(1*1*1/160) = 0.0791 gives ny = round(12.65) = 13 and
 #     nx = round(160/13) = 12: 156 parcels, all in the region, 8-12 per cell;
 #   - nParticle = 0.3*0.1/(156*pi/6*1e-6) = 367.2806379...
-#   - bad input: solidsFraction 1.2, jitter 1, parcelsPerCell 0 and region
-#     sphere each stop with a FatalIOError naming the keyword.
+#   - bad input: solidsFraction 1.2, jitter 1, parcelsPerCell 0, region
+#     sphere, an unknown cellZone and a box with min above max each stop
+#     with a FatalIOError naming the keyword.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: seedParcels.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -25,7 +26,8 @@ writeDict()
     cat > "$case/system/mppicSeedParcelsDict" <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; object mppicSeedParcelsDict; }
 region          ${1:-box};
-box             (0 0 0) (1 1 0.1);
+box             ${5:-(0 0 0) (1 1 0.1)};
+cellZone        noSuchZone;
 solidsFraction  ${2:-0.3};
 parcelsPerCell  ${3:-10};
 diameter        0.01;
@@ -68,7 +70,8 @@ PY
 
 status=0
 for bad in "box 1.2 10 0.5:solidsFraction" "box 0.3 10 1:jitter" \
-           "box 0.3 0 0.5:parcelsPerCell" "sphere 0.3 10 0.5:region"
+           "box 0.3 0 0.5:parcelsPerCell" "sphere 0.3 10 0.5:region" \
+           "cellZone 0.3 10 0.5:cellZone"
 do
     args="${bad%%:*}"
     keyword="${bad##*:}"
@@ -77,4 +80,9 @@ do
     rc=$?
     check fatal "$runDir/log.bad.$keyword" $rc "$keyword" || status=1
 done
+# box with min above max
+writeDict box 0.3 10 0.5 "(1 1 0.1) (0 0 0)"
+mppicSeedParcels -case "$case" > "$runDir/log.bad.box" 2>&1
+rc=$?
+check fatal "$runDir/log.bad.box" $rc "keyword box" "min < max" || status=1
 exit $status

@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "LinearRelaxationDragForce.H"
-#include "dragCorrelations.H"
 #include "boundedCoefficient.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
