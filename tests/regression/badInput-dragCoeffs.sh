@@ -1,7 +1,8 @@
 #!/bin/bash
 # badInput-dragCoeffs <runDir>: constantCdDrag with Cd = -1,
 # linearRelaxationDrag with C = -5, GidaspowDrag with switchFraction 1.2,
-# with blend maybe, constantCdDrag with feedback maybe, and GidaspowDrag
+# with blend maybe, constantCdDrag with feedback maybe, SyamlalOBrienDrag
+# with c1 -1, and GidaspowDrag
 # with alphac naming no field -> FatalError naming
 # the keyword and its range (or the field), exit status 1, no crash.
 . "${0%/*}/badInputFunctions"
@@ -13,6 +14,7 @@ for bad in "constantCdDrag { Cd -1; }:Cd:[0, inf)" \
            "GidaspowDrag { alphac alpha.air; switchFraction 1.2; }:switchFraction:(0, 1)" \
            "GidaspowDrag { alphac alpha.air; blend maybe; }:blend:maybe" \
            "constantCdDrag { Cd 1; feedback maybe; }:feedback:maybe" \
+           "SyamlalOBrienDrag { alphac alpha.air; c1 -1; }:c1:(0, inf)" \
            "GidaspowDrag { alphac alpha.gas; }:alphac:alpha.gas"
 do
     force="${bad%%:*}"

@@ -15,6 +15,11 @@ Description
                  K = 0.75*Cd*ag*rho_g*w/d*ag^-2.65
         Ergun:   K = 150*(1 - ag)*mu_g/(ag*d^2) + 1.75*rho_g*w/d
         constant Cd = 1: K = 0.75*Cd*rho_g*w/d = 4500
+    the dilute, creeping-flow limits of the resolved-simulation laws
+    (Stokes drag, K = 18*mu_g/d^2 at ag = 1, Re = 0, for Hill-Koch-Ladd
+    and BVK; Dalla Valle's 0.75*4.8^2*mu_g/d^2 for Syamlal-O'Brien, whose
+    V_r is 1 there) and Hill-Koch-Ladd's dense limit F = 10*phi/(1-phi)^3
+    at Re = 0 for phi >= 0.4,
     plus Wen-Yu above Re = 1000 (w = 200 m/s, ag = 0.9: Re = 1200) and the
     Gidaspow blend weight: 0.5 at the switch, atan(+-262.5*0.01)/pi + 0.5
     one hundredth either side, so that the blended K is continuous.
@@ -95,6 +100,32 @@ int main(int argc, char *argv[])
         "constant Cd = 1: K = 0.75*1.2*0.5/1e-4",
         dragCorrelations::constantCdK(1, w, d, rhog),
         4500
+    );
+
+    const scalar stokesK = 18*mug/(d*d);
+    checkClose
+    (
+        "Hill-Koch-Ladd K at ag = 1, zero slip: Stokes 18*mu/d^2",
+        dragCorrelations::hillKochLaddK(1, 0, d, rhog, mug),
+        stokesK
+    );
+    checkClose
+    (
+        "BVK K at ag = 1, zero slip: Stokes 18*mu/d^2",
+        dragCorrelations::bvkK(1, 0, d, rhog, mug),
+        stokesK
+    );
+    checkClose
+    (
+        "Syamlal-O'Brien K at ag = 1, zero slip: 0.75*4.8^2*mu/d^2",
+        dragCorrelations::syamlalOBrienK(1, 0, d, rhog, mug, 0.8, 2.65),
+        17.28*mug/(d*d)
+    );
+    checkClose
+    (
+        "Hill-Koch-Ladd F(0.5, 0) = 10*0.5/0.5^3 = 40",
+        dragCorrelations::hillKochLaddF(0.5, 0),
+        40
     );
 
     const scalar pi = constant::mathematical::pi;

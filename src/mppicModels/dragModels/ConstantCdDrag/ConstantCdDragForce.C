@@ -17,7 +17,7 @@ Foam::ConstantCdDragForce<CloudType>::ConstantCdDragForce
     const dictionary& dict
 )
 :
-    ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
+    MppicDragForce<CloudType>(owner, mesh, dict, typeName),
     Cd_
     (
         mppicCoefficients::read
@@ -26,8 +26,7 @@ Foam::ConstantCdDragForce<CloudType>::ConstantCdDragForce
             "Cd",
             mppicCoefficients::bounds::atLeast(0)
         )
-    ),
-    feedback_(this->coeffs().lookupOrDefault("feedback", true))
+    )
 {}
 
 
@@ -37,9 +36,8 @@ Foam::ConstantCdDragForce<CloudType>::ConstantCdDragForce
     const ConstantCdDragForce<CloudType>& df
 )
 :
-    ParticleForce<CloudType>(df),
-    Cd_(df.Cd_),
-    feedback_(df.feedback_)
+    MppicDragForce<CloudType>(df),
+    Cd_(df.Cd_)
 {}
 
 
@@ -50,49 +48,14 @@ Foam::scalar Foam::ConstantCdDragForce<CloudType>::Sp
 (
     const typename CloudType::parcelType& p,
     const typename CloudType::parcelType::trackingData& td,
-    const scalar mass
+    const scalar mass,
+    const scalar muc
 ) const
 {
     return
         mass
-       *dragCorrelations::constantCdK(Cd_, mag(td.Uc() - p.U()), p.d(), td.rhoc())
+       *dragCorrelations::constantCdK(Cd_, this->slip(p, td), p.d(), td.rhoc())
        /p.rho();
-}
-
-
-template<class CloudType>
-Foam::forceSuSp Foam::ConstantCdDragForce<CloudType>::calcNonCoupled
-(
-    const typename CloudType::parcelType& p,
-    const typename CloudType::parcelType::trackingData& td,
-    const scalar dt,
-    const scalar mass,
-    const scalar Re,
-    const scalar muc
-) const
-{
-    // OpenFOAM integrates only the explicit part of non-coupled forces
-    // (KinematicParcel::calcVelocity): the drag as Su = Sp*(u_g - u_p)
-    if (feedback_)
-    {
-        return forceSuSp(Zero, 0);
-    }
-    return forceSuSp(Sp(p, td, mass)*(td.Uc() - p.U()), 0);
-}
-
-
-template<class CloudType>
-Foam::forceSuSp Foam::ConstantCdDragForce<CloudType>::calcCoupled
-(
-    const typename CloudType::parcelType& p,
-    const typename CloudType::parcelType::trackingData& td,
-    const scalar dt,
-    const scalar mass,
-    const scalar Re,
-    const scalar muc
-) const
-{
-    return forceSuSp(Zero, feedback_ ? Sp(p, td, mass) : 0);
 }
 
 

@@ -39,7 +39,7 @@ Foam::DenseDragForce<CloudType>::DenseDragForce
     const word& forceType
 )
 :
-    ParticleForce<CloudType>(owner, mesh, dict, forceType, true),
+    MppicDragForce<CloudType>(owner, mesh, dict, forceType),
     alphac_(lookupAlphac(mesh, this->coeffs()))
 {}
 
@@ -50,9 +50,28 @@ Foam::DenseDragForce<CloudType>::DenseDragForce
     const DenseDragForce<CloudType>& df
 )
 :
-    ParticleForce<CloudType>(df),
+    MppicDragForce<CloudType>(df),
     alphac_(df.alphac_)
 {}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::scalar Foam::DenseDragForce<CloudType>::Sp
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar mass,
+    const scalar muc
+) const
+{
+    const scalar alphag = alphac(p);
+
+    return
+        mass*K(alphag, this->slip(p, td), p.d(), td.rhoc(), muc)
+       /(p.rho()*alphag);
+}
 
 
 // ************************************************************************* //

@@ -74,27 +74,4 @@ Foam::scalar Foam::GidaspowDragForce<CloudType>::K
 }
 
 
-template<class CloudType>
-Foam::forceSuSp Foam::GidaspowDragForce<CloudType>::calcCoupled
-(
-    const typename CloudType::parcelType& p,
-    const typename CloudType::parcelType::trackingData& td,
-    const scalar dt,
-    const scalar mass,
-    const scalar Re,
-    const scalar muc
-) const
-{
-    const scalar alphag = this->alphac(p);
-
-    return
-        forceSuSp
-        (
-            Zero,
-            mass*K(alphag, this->slip(p, td), p.d(), td.rhoc(), muc)
-           /(p.rho()*alphag)
-        );
-}
-
-
 // ************************************************************************* //

@@ -16,7 +16,7 @@ Foam::LinearRelaxationDragForce<CloudType>::LinearRelaxationDragForce
     const dictionary& dict
 )
 :
-    ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
+    MppicDragForce<CloudType>(owner, mesh, dict, typeName),
     C_
     (
         mppicCoefficients::read
@@ -35,7 +35,7 @@ Foam::LinearRelaxationDragForce<CloudType>::LinearRelaxationDragForce
     const LinearRelaxationDragForce<CloudType>& df
 )
 :
-    ParticleForce<CloudType>(df),
+    MppicDragForce<CloudType>(df),
     C_(df.C_)
 {}
 
@@ -43,17 +43,15 @@ Foam::LinearRelaxationDragForce<CloudType>::LinearRelaxationDragForce
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-Foam::forceSuSp Foam::LinearRelaxationDragForce<CloudType>::calcCoupled
+Foam::scalar Foam::LinearRelaxationDragForce<CloudType>::Sp
 (
     const typename CloudType::parcelType& p,
     const typename CloudType::parcelType::trackingData& td,
-    const scalar dt,
     const scalar mass,
-    const scalar Re,
     const scalar muc
 ) const
 {
-    return forceSuSp(Zero, C_*mass);
+    return C_*mass;
 }
 
 

@@ -64,6 +64,161 @@ Foam::scalar Foam::dragCorrelations::gidaspowBlendWeight
 }
 
 
+namespace Foam
+{
+namespace dragCorrelations
+{
+namespace
+{
+
+// Hill-Koch-Ladd zero-Re and high-Re fits F0 and F2, below phi = 0.4
+// a blend (weight w) of the dilute fit and the dense 10*phi/(1 - phi)^3
+scalar hillKochLaddFit
+(
+    const scalar phi,
+    const scalar a,
+    const scalar b,
+    const scalar c
+)
+{
+    const scalar dense = 10*phi/pow3(1 - phi);
+    if (phi >= 0.4)
+    {
+        return dense;
+    }
+    if (phi <= 0)
+    {
+        return 1;
+    }
+
+    const scalar w = exp(-10*(0.4 - phi)/phi);
+    const scalar dilute =
+        (1 + 3*sqrt(phi/2) + 135.0/64.0*phi*log(phi) + a*phi)
+       /(1 + 0.681*phi + b*sqr(phi) + c*pow3(phi));
+
+    return (1 - w)*dilute + w*dense;
+}
+
+} // End anonymous namespace
+} // End namespace dragCorrelations
+} // End namespace Foam
+
+
+Foam::scalar Foam::dragCorrelations::hillKochLaddF
+(
+    const scalar phi,
+    const scalar ReRadius
+)
+{
+    const scalar F2 = hillKochLaddFit(phi, 17.89, -11.03, 15.41);
+    const scalar F3 =
+        phi < 0.0953
+      ? 0.9351*phi + 0.03667
+      : 0.0673 + 0.212*phi + 0.0232/pow5(1 - phi);
+
+    if (phi <= 0.01)
+    {
+        const scalar ReTransition = (F2 - 1)/(3.0/8.0 - F3);
+        return
+            ReRadius <= ReTransition
+          ? 1 + 3.0/8.0*ReRadius
+          : F2 + F3*ReRadius;
+    }
+
+    const scalar F0 = hillKochLaddFit(phi, 17.14, -8.48, 8.16);
+    const scalar F1 =
+        phi <= 0.1 ? sqrt(2/phi)/40 : 0.11 + 5.1e-4*exp(11.6*phi);
+    const scalar ReTransition =
+        (F3 + sqrt(sqr(F3) - 4*F1*(F0 - F2)))/(2*F1);
+
+    return
+        ReRadius <= ReTransition
+      ? F0 + F1*sqr(ReRadius)
+      : F2 + F3*ReRadius;
+}
+
+
+Foam::scalar Foam::dragCorrelations::hillKochLaddK
+(
+    const scalar alphag,
+    const scalar slip,
+    const scalar d,
+    const scalar rhog,
+    const scalar mug
+)
+{
+    const scalar ReRadius = 0.5*alphag*rhog*slip*d/mug;
+
+    return
+        18*mug*sqr(alphag)/sqr(d)*hillKochLaddF(1 - alphag, ReRadius);
+}
+
+
+Foam::scalar Foam::dragCorrelations::bvkF(const scalar phi, const scalar Re)
+{
+    const scalar alphag = 1 - phi;
+    const scalar stokes =
+        10*phi/sqr(alphag) + sqr(alphag)*(1 + 1.5*sqrt(phi));
+
+    if (Re < VSMALL)
+    {
+        return stokes;
+    }
+
+    const scalar inertial =
+        0.413*Re/(24*sqr(alphag))
+       *(1/alphag + 3*alphag*phi + 8.4*pow(Re, -0.343))
+       /(1 + pow(10, 3*phi)*pow(Re, -(0.5 + 2*phi)));
+
+    return stokes + inertial;
+}
+
+
+Foam::scalar Foam::dragCorrelations::bvkK
+(
+    const scalar alphag,
+    const scalar slip,
+    const scalar d,
+    const scalar rhog,
+    const scalar mug
+)
+{
+    const scalar Re = alphag*rhog*slip*d/mug;
+
+    return 18*mug*alphag/sqr(d)*bvkF(1 - alphag, Re);
+}
+
+
+Foam::scalar Foam::dragCorrelations::syamlalOBrienK
+(
+    const scalar alphag,
+    const scalar slip,
+    const scalar d,
+    const scalar rhog,
+    const scalar mug,
+    const scalar c1,
+    const scalar d1
+)
+{
+    const scalar ReSingle = rhog*slip*d/mug;
+
+    const scalar A = pow(alphag, 4.14);
+    const scalar B = alphag <= 0.85 ? c1*pow(alphag, 1.28) : pow(alphag, d1);
+
+    // Ratio of the terminal velocity of the suspension to a single sphere's
+    const scalar Vr =
+        0.5
+       *(
+            A - 0.06*ReSingle
+          + sqrt(sqr(0.06*ReSingle) + 0.12*ReSingle*(2*B - A) + sqr(A))
+        );
+
+    // Dalla Valle's Cd*Re at Re_s/V_r is (0.63*sqrt(Re_s/V_r) + 4.8)^2
+    return
+        0.75*mug*alphag/(Vr*sqr(d))*sqr(0.63*sqrt(ReSingle/Vr) + 4.8);
+}
+
+
 Foam::scalar Foam::dragCorrelations::constantCdK
 (
     const scalar Cd,
