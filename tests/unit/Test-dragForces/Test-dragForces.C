@@ -15,6 +15,7 @@ Description
         one particle, d = 0.2 mm, rho_p = 2500, rho_g = 1.2, mu_g = 1.8e-5,
         V_p = piValue*d^3/6;  points (alpha_g, slip w [m/s]):
         dilute (0.995, 0.5), intermediate (0.7, 2), dense (0.45, 5)
+        (StokesDrag also: its slip of eq 7 balances the buoyant weight)
         and, for the other Hill-Koch-Ladd branches, (0.995, 0.02) and
         (0.7, 0.3). With the OpenFOAM convention of DenseDragForce
         (no separate pressure-gradient force on the parcels),
@@ -134,6 +135,13 @@ scalar handSyamlalOBrien(const scalar ag, const scalar w)
     const scalar Cd = std::pow(0.63 + 4.8/std::sqrt(Re/Vr), 2);
     const scalar beta = 0.75*(1 - ag)*ag*rhog*w*Cd/(Vr*Vr*d);
     return Vp*beta/((1 - ag)*ag);
+}
+
+// Stokes drag 3*pi*mu*d*w on a sphere, with Wen-Yu's voidage factor on
+// beta (ag^-2.65) and the 1/ag of DenseDragForce
+scalar handStokes(const scalar ag, const scalar w)
+{
+    return 3*piValue*mug*d*std::pow(ag, -3.65);
 }
 
 // Constant Cd: drag 0.5*rhog*Cd*(piValue*d^2/4)*w^2
@@ -327,6 +335,38 @@ int main(int argc, char *argv[])
         "SyamlalOBrienDrag", "alphac alpha.air;", handSyamlalOBrien,
         threePoints
     );
+    compare("StokesDrag", "alphac alpha.air;", handStokes, threePoints);
+    compare
+    (
+        "StokesDrag", "alphac alpha.air; voidageExponent 0;",
+        [](const scalar ag, const scalar w)
+        {
+            return 3*piValue*mug*d/ag;
+        },
+        threePoints
+    );
+
+    // Eq 7 of the settling-shock case: at u_r = g*drho*d^2/(18*mu)*ag^3.65
+    // the drag balances the buoyant weight V_p*(rho_p - rho_g)*g
+    {
+        autoPtr<ParticleForce<cloudType>> force
+        (
+            select(cloud, mesh, "StokesDrag", "alphac alpha.air;")
+        );
+        const scalar ag = 0.85;
+        const scalar ur =
+            9.81*(rhop - rhog)*d*d/(18*mug)*std::pow(ag, 3.65);
+        setGas(ag, ur);
+        vector Su;
+        const scalar Sp = coefficients(force(), cloud, p, Su).first();
+        checkClose
+        (
+            "StokesDrag at eq 7's slip balances the buoyant weight",
+            Sp*ur,
+            Vp*(rhop - rhog)*9.81
+        );
+    }
+
     compare
     (
         "constantCdDrag", "Cd 1;",
@@ -399,6 +439,15 @@ int main(int argc, char *argv[])
         (
             cloud, mesh, "SyamlalOBrienDrag", "alphac alpha.air; d1 -2;",
             {"d1", "-2", "(0, inf)"}
+        )
+    );
+    checkTrue
+    (
+        "StokesDrag voidageExponent -1 rejected",
+        rejects
+        (
+            cloud, mesh, "StokesDrag", "alphac alpha.air; voidageExponent -1;",
+            {"voidageExponent", "-1", "[0, inf)"}
         )
     );
     checkTrue

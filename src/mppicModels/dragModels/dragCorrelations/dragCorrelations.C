@@ -219,6 +219,18 @@ Foam::scalar Foam::dragCorrelations::syamlalOBrienK
 }
 
 
+Foam::scalar Foam::dragCorrelations::stokesK
+(
+    const scalar alphag,
+    const scalar d,
+    const scalar mug,
+    const scalar voidageExponent
+)
+{
+    return 18*mug/sqr(d)*pow(alphag, -voidageExponent);
+}
+
+
 Foam::scalar Foam::dragCorrelations::constantCdK
 (
     const scalar Cd,
