@@ -10,6 +10,8 @@ Usage:
     checks.py serialParallel <serialCase> <parallelCase> <time>
     checks.py cloudMass <case> <time> <expectedMass> <relTol>
     checks.py fatal <log> <rc> <text> [<text> ...]
+    checks.py subCycles <log> <responseTime> <factor>
+    checks.py subCyclesCFL <case> <log> <CFL> <cellHeight>
 """
 import math
 import os
@@ -107,10 +109,67 @@ def fatal(log, rc, *texts):
         report(t in text, "message names '%s'" % t)
 
 
+def sub_cycles(log, response_time, factor):
+    """Each gas step's sub-step count against eq 24 by hand: when the
+    response time limits, n = ceil(dt_gas/(factor*tau_p))."""
+    dt_sol = float(factor)*float(response_time)
+    text = open(log).read()
+    steps = re.findall(r"\ndeltaT = (\S+)\nTime = \S+.*?"
+                       r"Solids sub-cycling: (\d+) sub-step\(s\) of \S+ s, "
+                       r"limited by ([a-z ]+) \(", text, re.S)
+    limited = [(float(dt), int(n)) for dt, n, why in steps
+               if why == "response time"]
+    report(len(limited) >= 5, "%d of %d gas steps limited by the response "
+           "time (at least 5)" % (len(limited), len(steps)))
+    wrong = [(dt, n) for dt, n in limited
+             if n != math.ceil(dt/dt_sol*(1 - 1e-12))]
+    report(not wrong, "sub-steps = ceil(dt_gas/(%g*%g)) on every such step "
+           "(wrong: %s)" % (float(factor), float(response_time), wrong[:3]))
+    full = [n for dt, n in limited if abs(dt - 0.01) < 1e-12]
+    if full:
+        report(all(n == math.ceil(0.01/dt_sol) for n in full),
+               "%d steps of 0.01 s: %s sub-steps (hand: %d)"
+               % (len(full), sorted(set(full)), math.ceil(0.01/dt_sol)))
+
+
+def sub_cycles_cfl(case, log, cfl, height):
+    """The solids step of the gas step that follows each write time,
+    against CFL*dy/|V_y| with the parcel's velocity as written (one parcel
+    moving along y in cells of height dy)."""
+    text = open(log).read()
+    steps = re.findall(r"\nTime = (\S+)\n.*?Solids sub-cycling: \d+ "
+                       r"sub-step\(s\) of \S+ s, limited by ([a-zA-Z ]+) "
+                       r"\(dt_sol = (\S+) s\)", text, re.S)
+    times = sorted((float(t), t) for t in os.listdir(case)
+                   if re.fullmatch(r"[0-9.e+-]+", t) and float(t) > 0)
+    checked = 0
+    start = {float(t): (why, float(s)) for t, why, s in steps}
+    for k, (t, name) in enumerate(times[:-1]):
+        path = os.path.join(case, name, "lagrangian", "kinematicCloud", "U")
+        if not os.path.exists(path):
+            continue
+        vy = float(re.search(r"1\s*\(\s*\(([^)]*)\)",
+                             open(path).read()).group(1).split()[1])
+        # the step that starts at t ends at the first logged time above t
+        after = [s for s in start if s > t + 1e-12]
+        if not after:
+            continue
+        why, dt_sol = start[min(after)]
+        if why != "CFL":
+            continue
+        expected = float(cfl)*float(height)/abs(vy)
+        report(abs(dt_sol - expected) <= 1e-6*expected,
+               "t = %s: dt_sol %.9g = CFL*dy/|V_y| %.9g" % (name, dt_sol,
+                                                           expected))
+        checked += 1
+    report(checked >= 5, "%d write times checked (at least 5)" % checked)
+
+
 def main(argv):
     cmd, args = argv[1], argv[2:]
     {"parity": parity, "serialParallel": serial_parallel,
-     "cloudMass": cloud_mass, "fatal": fatal}[cmd](*args)
+     "cloudMass": cloud_mass, "fatal": fatal,
+     "subCycles": sub_cycles, "subCyclesCFL": sub_cycles_cfl}[cmd](*args)
     return 1 if failures else 0
 
 

@@ -29,6 +29,10 @@ Description
     both solvers give the same answer on the same case; the models of
     libmppicModels are linked in and selectable at run time.
 
+    With solidsSubCycling active in the cloud's properties, the parcels
+    cross each gas step in sub-steps of MFiX-PIC's eq 24 (SolidsSubCycle:
+    CFL, response time, gas step), with the gas frozen and the momentum
+    exchange averaged over the gas step; inactive, the step is unchanged.
     Each step prints the number of parcels and the largest cell solids
     fraction of the cloud (before the alphaMax limit) and, when the cloud
     has a packing model, runs libmppicModels' packingMonitor (written to
@@ -52,6 +56,7 @@ Usage
 #include "pimpleControl.H"
 #include "basicKinematicMPPICCloud.H"
 #include "packingMonitor.H"
+#include "SolidsSubCycle.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
