@@ -72,19 +72,14 @@ dictionary settings(const word& lower, const word& upper)
 // True when constructing with dict raises a FatalIOError mentioning keyword
 bool rejects(const Time& runTime, const dictionary& dict, const word& keyword)
 {
-    FatalIOError.throwExceptions();
-    bool thrown = false;
-    try
-    {
-        functionObjects::bedPressureDrop fo("bad", runTime, dict);
-    }
-    catch (const IOerror& err)
-    {
-        thrown = err.message().find(keyword) != string::npos;
-        Info<< "    caught: " << err.message().c_str() << endl;
-    }
-    FatalIOError.dontThrowExceptions();
-    return thrown;
+    return unitTest::raisesError
+    (
+        [&]()
+        {
+            functionObjects::bedPressureDrop fo("bad", runTime, dict);
+        },
+        {keyword}
+    );
 }
 
 

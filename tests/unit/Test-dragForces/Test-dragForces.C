@@ -210,25 +210,11 @@ bool rejects
     const wordList& words
 )
 {
-    FatalIOError.throwExceptions();
-    FatalError.throwExceptions();
-    bool thrown = false;
-    try
-    {
-        select(cloud, mesh, model, text);
-    }
-    catch (const error& err)
-    {
-        thrown = true;
-        for (const word& w : words)
-        {
-            thrown = thrown && err.message().find(w) != string::npos;
-        }
-        Info<< "    caught: " << err.message().c_str() << endl;
-    }
-    FatalIOError.dontThrowExceptions();
-    FatalError.dontThrowExceptions();
-    return thrown;
+    return raisesError
+    (
+        [&]() { select(cloud, mesh, model, text); },
+        words
+    );
 }
 
 

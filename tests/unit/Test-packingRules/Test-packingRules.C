@@ -88,19 +88,11 @@ void checkVector
 template<class Rules>
 bool rejects(const dictionary& dict, const word& keyword)
 {
-    FatalIOError.throwExceptions();
-    bool thrown = false;
-    try
-    {
-        Rules rules(dict);
-    }
-    catch (const IOerror& err)
-    {
-        thrown = err.message().find(keyword) != string::npos;
-        Info<< "    caught: " << err.message().c_str() << endl;
-    }
-    FatalIOError.dontThrowExceptions();
-    return thrown;
+    return unitTest::raisesError
+    (
+        [&]() { Rules rules(dict); },
+        {keyword}
+    );
 }
 
 

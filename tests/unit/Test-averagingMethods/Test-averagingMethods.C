@@ -1,0 +1,367 @@
+/*---------------------------------------------------------------------------*\
+    mppicModels unit tests
+-------------------------------------------------------------------------------
+Application
+    Test-averagingMethods
+
+Description
+    The averaging methods linearHat and diffusion and the linearHat
+    interpolation of libmppicModels, selected by name through OpenFOAM's
+    run-time tables as the MPPIC cloud selects them, on two meshes:
+    - region "periodic": a 1 m cube of 10 x 10 x 10 cells of 0.1 m (centres
+      at 0.05, 0.15, ..., 0.95), every boundary cyclic;
+    - the box of tests/unit/cases/box: 4 x 8 x 1 cells of 0.25 x 0.25 x
+      0.1 m, walls (and a patch at the top).
+    Weights are read back as (cell value) x (cell volume) after depositing
+    1 at a point; the expected trilinear weights are written out below.
+
+    diffusion: bandwidth b, pseudo-time T = b^2/4, variance b^2/2 per
+    direction; with b = 0.2 m: 0.02 m^2.
+
+\*---------------------------------------------------------------------------*/
+
+#include "averagingTestHelpers.H"
+#include "interpolation.H"
+
+using namespace Foam;
+using namespace Foam::averagingTest;
+
+// * * * * * * * * * * * * * * * * Test groups * * * * * * * * * * * * * * //
+
+void linearHatWeights(const fvMesh& cube, const fvMesh& box)
+{
+    const dictionary linearHat(solutionDict("averagingMethod linearHat;"));
+
+    checkWeights
+    (
+        "cell centre", cube, linearHat, point(0.45, 0.45, 0.45),
+        {{point(0.45, 0.45, 0.45), 1}}
+    );
+    checkWeights
+    (
+        "face centre", cube, linearHat, point(0.5, 0.45, 0.45),
+        {{point(0.45, 0.45, 0.45), 0.5}, {point(0.55, 0.45, 0.45), 0.5}}
+    );
+    cellWeights vertex;
+    for (const scalar x : {0.45, 0.55})
+    {
+        for (const scalar y : {0.45, 0.55})
+        {
+            for (const scalar z : {0.45, 0.55})
+            {
+                vertex.append(Tuple2<point, scalar>(point(x, y, z), 0.125));
+            }
+        }
+    }
+    checkWeights("vertex of 8 cells", cube, linearHat, point(0.5, 0.5, 0.5), vertex);
+
+    // (0.47, 0.42, 0.53) in the cell at (0.45, 0.45, 0.55): t = 0.2 toward
+    // x = 0.55, 0.3 toward y = 0.35, 0.2 toward z = 0.45
+    checkWeights
+    (
+        "off-centre point", cube, linearHat, point(0.47, 0.42, 0.53),
+        {
+            {point(0.45, 0.45, 0.55), 0.8*0.7*0.8},
+            {point(0.55, 0.45, 0.55), 0.2*0.7*0.8},
+            {point(0.45, 0.35, 0.55), 0.8*0.3*0.8},
+            {point(0.55, 0.35, 0.55), 0.2*0.3*0.8},
+            {point(0.45, 0.45, 0.45), 0.8*0.7*0.2},
+            {point(0.55, 0.45, 0.45), 0.2*0.7*0.2},
+            {point(0.45, 0.35, 0.45), 0.8*0.3*0.2},
+            {point(0.55, 0.35, 0.45), 0.2*0.3*0.2}
+        }
+    );
+
+    // Across the cyclics: 0.03 m from a cell centre toward the boundary
+    checkWeights
+    (
+        "across a cyclic", cube, linearHat, point(0.02, 0.45, 0.45),
+        {{point(0.05, 0.45, 0.45), 0.7}, {point(0.95, 0.45, 0.45), 0.3}}
+    );
+    checkWeights
+    (
+        "across two cyclics (edge)", cube, linearHat, point(0.02, 0.98, 0.45),
+        {
+            {point(0.05, 0.95, 0.45), 0.7*0.7},
+            {point(0.95, 0.95, 0.45), 0.3*0.7},
+            {point(0.05, 0.05, 0.45), 0.7*0.3},
+            {point(0.95, 0.05, 0.45), 0.3*0.3}
+        }
+    );
+
+    // Walls: the part beyond the wall stays in the near cell
+    checkWeights
+    (
+        "next to a wall", box, linearHat, point(0.05, 1.1, 0.05),
+        {{point(0.125, 1.125, 0.05), 0.9}, {point(0.125, 0.875, 0.05), 0.1}}
+    );
+    checkWeights
+    (
+        "in a wall corner", box, linearHat, point(0.02, 0.03, 0.01),
+        {{point(0.125, 0.125, 0.05), 1}}
+    );
+}
+
+
+void linearHatConservation(const fvMesh& cube)
+{
+    const dictionary linearHat(solutionDict("averagingMethod linearHat;"));
+    autoPtr<AveragingMethod<vector>> average(newAverage<vector>(cube, linearHat));
+
+    Random rng(1234);
+    const label nParcels = 200;
+    for (label i = 0; i < nParcels; ++i)
+    {
+        deposit(average(), cube, rng.sample01<vector>(), vector(1, -2, 0.5));
+    }
+    average->average();
+
+    const vector total = totalAmount(average(), cube);
+    checkClose("200 random parcels: total x", total.x(), nParcels, tol);
+    checkClose("200 random parcels: total y", total.y(), -2*nParcels, tol);
+    checkClose("200 random parcels: total z", total.z(), 0.5*nParcels, tol);
+}
+
+
+// A lattice of 2 x 2 parcels per cell of the box, at a quarter cell from
+// the centre in x and y, deposits 4 parcels' worth in every cell, next to
+// the walls and in the corners too (the reflected part makes up for what
+// the cell beyond the wall would give)
+void linearHatUniformLattice(const fvMesh& box)
+{
+    const dictionary linearHat(solutionDict("averagingMethod linearHat;"));
+    autoPtr<AveragingMethod<scalar>> average(newAverage<scalar>(box, linearHat));
+
+    const scalar h = 0.25;
+    for (label i = 0; i < 8; ++i)
+    {
+        for (label j = 0; j < 16; ++j)
+        {
+            deposit(average(), box, point((i + 0.5)*h/2, (j + 0.5)*h/2, 0.05), 1.0);
+        }
+    }
+    average->average();
+
+    const scalarField density(average->primitiveField());
+    const scalar expected = 4/(h*h*0.1);
+    checkClose("uniform lattice: largest cell value", max(density), expected, tol);
+    checkClose("uniform lattice: smallest cell value", min(density), expected, tol);
+}
+
+
+void linearHatInterpolation(const fvMesh& cube)
+{
+    const volVectorField& C = cube.C();
+    volScalarField linear
+    (
+        IOobject("linear", cube.time().timeName(), cube),
+        cube,
+        dimensionedScalar("zero", dimless, 0)
+    );
+    linear.primitiveFieldRef() =
+        2 + 3*C.component(0)().primitiveField()
+      - C.component(1)().primitiveField() + 0.5*C.component(2)().primitiveField();
+
+    autoPtr<interpolation<scalar>> scheme
+    (
+        interpolation<scalar>::New("linearHat", linear)
+    );
+
+    const dictionary linearHat(solutionDict("averagingMethod linearHat;"));
+    autoPtr<AveragingMethod<scalar>> average(newAverage<scalar>(cube, linearHat));
+    average()[0] = linear.primitiveField();
+
+    const pointField interior
+    ({
+        point(0.47, 0.42, 0.53), point(0.5, 0.5, 0.5),
+        point(0.31, 0.77, 0.12), point(0.9, 0.1, 0.6)
+    });
+    for (const point& x : interior)
+    {
+        const scalar exact = 2 + 3*x.x() - x.y() + 0.5*x.z();
+        const passiveParticle p(cube, x);
+        checkClose
+        (
+            "interpolation linearHat of 2 + 3x - y + z/2 at " + Foam::name(x),
+            scheme->interpolate(x, p.cell()), exact, tol
+        );
+        checkClose
+        (
+            "averaging linearHat interpolate of the same at " + Foam::name(x),
+            average->interpolate(p.coordinates(), p.currentTetIndices()),
+            exact, tol
+        );
+    }
+}
+
+
+void diffusionSpreading(const fvMesh& cube, const fvMesh& box)
+{
+    const point centre(0.45, 0.45, 0.45);
+    const scalar b = 0.2;
+
+    // The variance of the implicit steps is b^2/2 exactly on an unbounded
+    // uniform mesh; measured here by nearest image on the periodic cube,
+    // whose half width is 2.5 b. One step has exponential tails, so the
+    // cube loses more of them: tolerance 10 % for one step, 5 % for three
+    const List<Tuple2<label, scalar>> stepsAndTolerances({{1, 0.1}, {3, 0.05}});
+    for (const Tuple2<label, scalar>& steps : stepsAndTolerances)
+    {
+        const label nSteps = steps.first();
+        const dictionary diffusion
+        (
+            solutionDict
+            (
+                "averagingMethod diffusion; diffusionCoeffs { bandwidth 0.2; nSteps "
+              + Foam::name(nSteps) + "; }"
+            )
+        );
+        autoPtr<AveragingMethod<scalar>> average(newAverage<scalar>(cube, diffusion));
+        deposit(average(), cube, centre, scalar(3));
+        average->average();
+
+        const string tag = "diffusion nSteps " + Foam::name(nSteps);
+        checkClose(tag + ": total kept", totalAmount(average(), cube), 3, tol);
+        const vector m2 = secondMoment(average(), cube, centre);
+        for (direction i = 0; i < 3; ++i)
+        {
+            checkClose
+            (
+                tag + ": variance along " + Foam::name(i) + " = b^2/2",
+                m2[i], b*b/2, steps.second()
+            );
+        }
+        checkTrue
+        (
+            tag + ": the parcel's cell keeps less than half",
+            amountIn(average(), cube, centre) < 1.5
+        );
+
+        // Assigned from a smoothed average and averaged again: not smoothed
+        // a second time
+        autoPtr<AveragingMethod<scalar>> copy(newAverage<scalar>(cube, diffusion));
+        copy() = average();
+        copy->average();
+        checkClose
+        (
+            tag + ": assigned average not smoothed twice",
+            amountIn(copy(), cube, centre), amountIn(average(), cube, centre), tol
+        );
+    }
+
+    // Walls: nothing leaves; weighted average of equal velocities
+    const dictionary wide
+    (
+        solutionDict("averagingMethod diffusion; diffusionCoeffs { bandwidth 0.5; }")
+    );
+    autoPtr<AveragingMethod<scalar>> mass(newAverage<scalar>(box, wide));
+    autoPtr<AveragingMethod<vector>> momentum(newAverage<vector>(box, wide));
+    autoPtr<AveragingMethod<vector>> velocity(newAverage<vector>(box, wide));
+    const vector U(1, -2, 0.5);
+    const List<Tuple2<point, scalar>> parcels
+    ({
+        {point(0.05, 0.1, 0.05), 1}, {point(0.9, 1.95, 0.02), 2}
+    });
+    for (const Tuple2<point, scalar>& parcel : parcels)
+    {
+        deposit(mass(), box, parcel.first(), parcel.second());
+        deposit(momentum(), box, parcel.first(), parcel.second()*U);
+        deposit(velocity(), box, parcel.first(), parcel.second()*U);
+    }
+    mass->average();
+    momentum->average();
+    velocity->average(mass());
+
+    checkClose("diffusion at walls: total mass kept", totalAmount(mass(), box), 3, tol);
+    const vector totalMomentum = totalAmount(momentum(), box);
+    for (direction i = 0; i < 3; ++i)
+    {
+        checkClose
+        (
+            "diffusion at walls: total momentum kept, component " + Foam::name(i),
+            totalMomentum[i], 3*U[i], tol
+        );
+    }
+    checkTrue
+    (
+        "diffusion at walls: the mass spreads over the box (far corner > 0)",
+        amountIn(mass(), box, point(0.875, 0.125, 0.05)) > 0
+    );
+
+    const label celli = cellAt(box, parcels[0].first());
+    const vector Ucell = velocity->primitiveField()()[celli];
+    for (direction i = 0; i < 3; ++i)
+    {
+        checkClose
+        (
+            "diffusion weighted average of equal velocities, component "
+          + Foam::name(i), Ucell[i], U[i], tol
+        );
+    }
+}
+
+
+void badCoefficients(const fvMesh& cube)
+{
+    checkTrue
+    (
+        "diffusion bandwidth 0 rejected",
+        rejects
+        (
+            cube, "averagingMethod diffusion; diffusionCoeffs { bandwidth 0; }",
+            {"bandwidth", "(0, inf)"}
+        )
+    );
+    checkTrue
+    (
+        "diffusion bandwidth -0.1 rejected",
+        rejects
+        (
+            cube, "averagingMethod diffusion; diffusionCoeffs { bandwidth -0.1; }",
+            {"bandwidth", "-0.1", "(0, inf)"}
+        )
+    );
+    checkTrue
+    (
+        "diffusion nSteps 0 rejected",
+        rejects
+        (
+            cube,
+            "averagingMethod diffusion; diffusionCoeffs { bandwidth 0.1; nSteps 0; }",
+            {"nSteps", "[1, inf)"}
+        )
+    );
+    checkTrue
+    (
+        "diffusion without diffusionCoeffs rejected",
+        rejects(cube, "averagingMethod diffusion;", {"diffusionCoeffs"})
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * * * Main * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::noParallel();
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    fvMesh cube
+    (
+        IOobject("periodic", runTime.timeName(), runTime, IOobject::MUST_READ)
+    );
+
+    linearHatWeights(cube, mesh);
+    linearHatConservation(cube);
+    linearHatUniformLattice(mesh);
+    linearHatInterpolation(cube);
+    diffusionSpreading(cube, mesh);
+    badCoefficients(cube);
+
+    return summary();
+}
+
+
+// ************************************************************************* //
