@@ -5,6 +5,7 @@
 
 #include "packingMonitor.H"
 #include "AveragingMethod.H"
+#include "MfixPackingModel.H"
 #include "wallPolyPatch.H"
 #include "boundedCoefficient.H"
 #include "addToRunTimeSelectionTable.H"
@@ -275,6 +276,32 @@ Foam::functionObjects::packingMonitor::evaluate() const
         if (alphaCell[celli] > closePackFraction_)
         {
             ++s.nCellsAboveClosePack;
+        }
+    }
+
+    // Our packing models record the velocity change they gave, which can
+    // differ from UCorrect (a move back out of a full cell is a
+    // displacement, not a velocity: ColoringFunction)
+    typedef PackingModels::MfixPackingModel
+    <
+        basicKinematicMPPICCloud::MPPICCloudType
+    > mfixModel;
+
+    const mfixModel* ours =
+        dynamic_cast<const mfixModel*>(&cloud.packingModel());
+
+    if (ours && ours->cellAddedMomentum().size() == mesh_.nCells())
+    {
+        s.packingMomentum = Zero;
+        s.wallPackingMomentum = Zero;
+        forAll(wallCells_, celli)
+        {
+            const vector& momentum = ours->cellAddedMomentum()[celli];
+            s.packingMomentum += momentum;
+            if (wallCells_[celli])
+            {
+                s.wallPackingMomentum += momentum;
+            }
         }
     }
 

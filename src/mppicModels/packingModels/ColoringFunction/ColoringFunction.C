@@ -184,7 +184,13 @@ velocityCorrection
 
     if (capacityLimit_ && impulse_ == impulseType::neighbour)
     {
-        correction =
+        // The correction move puts the parcel where it may be; OpenFOAM
+        // then adds the move's velocity to the parcel's (MPPICParcel,
+        // tpCorrectTrack). Set the velocity now so that the sum is the
+        // velocity the rules give, without a component into a cell that
+        // refused the parcel: a move back across a cell is a displacement,
+        // and kept as a velocity it would fling the parcel out of the pack
+        const vector move =
             entries_.limitedCorrection
             (
                 this->owner().mesh(),
@@ -192,8 +198,15 @@ velocityCorrection
                 correction,
                 deltaT
             );
+
+        const vector kept = entries_.keptVelocity(p, p.U() + correction);
+        this->recordVelocityChange(p, kept - p.U());
+        p.U() = kept - move;
+
+        return move;
     }
 
+    this->recordVelocityChange(p, correction);
     return correction;
 }
 

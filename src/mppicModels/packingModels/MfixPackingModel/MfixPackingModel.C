@@ -27,7 +27,8 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     cellValues_(),
     cellUMean_(),
     coupledValues_(),
-    coupledUMean_()
+    coupledUMean_(),
+    cellAddedMomentum_()
 {}
 
 
@@ -45,7 +46,8 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     cellValues_(),
     cellUMean_(),
     coupledValues_(),
-    coupledUMean_()
+    coupledUMean_(),
+    cellAddedMomentum_()
 {}
 
 
@@ -268,6 +270,9 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheFields
 
     const fvMesh& mesh = this->owner().mesh();
     const word& cloudName = this->owner().name();
+
+    cellAddedMomentum_.setSize(mesh.nCells());
+    cellAddedMomentum_ = Zero;
 
     volumeAverage_ =
         &mesh.lookupObject<AveragingMethod<scalar>>(cloudName + ":volumeAverage");

@@ -44,9 +44,12 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
     const vector dU =
         rules_.impulseVelocity(tauGrad, p.rho(), this->alphaAt(p), deltaT);
 
-    return
+    const vector correction =
         rules_.correctedVelocity(p.U(), this->uMeanAt(p), dU, tauGrad)
       - p.U();
+
+    this->recordVelocityChange(p, correction);
+    return correction;
 }
 
 

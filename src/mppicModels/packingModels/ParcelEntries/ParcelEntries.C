@@ -266,6 +266,27 @@ Foam::scalar Foam::ParcelEntries<CloudType>::entryDistance
 
 
 template<class CloudType>
+Foam::vector Foam::ParcelEntries<CloudType>::keptVelocity
+(
+    const parcelType& p,
+    const vector& U
+) const
+{
+    const entry* e = find(p);
+
+    if (e && !e->admitted)
+    {
+        const scalar inward = U & e->direction;
+        if (inward > 0)
+        {
+            return U - inward*e->direction;
+        }
+    }
+    return U;
+}
+
+
+template<class CloudType>
 Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
 (
     const fvMesh& mesh,
