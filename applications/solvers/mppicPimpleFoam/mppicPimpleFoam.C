@@ -40,6 +40,11 @@ Description
     system/controlDict turns it off). Writes U.<gas>,
     p (kinematic), alpha.<gas> and alpha.<cloud> (solids fraction).
 
+    With constant/prescribedGasFlowProperties (libmppicModels'
+    prescribedGasFlow, e.g. "type vortex; period 0.25;") the gas is not
+    solved: U.<gas> and phi.<gas> follow the analytic field, at mid-step
+    while the parcels move (see createPrescribedGasFlow.H).
+
 Usage
     mppicPimpleFoam [-cloud <name>] [-parallel]
 
@@ -57,6 +62,7 @@ Usage
 #include "basicKinematicMPPICCloud.H"
 #include "packingMonitor.H"
 #include "SolidsSubCycle.H"
+#include "prescribedGasFlow.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -84,6 +90,7 @@ int main(int argc, char *argv[])
     #include "createTimeControls.H"
     #include "createFields.H"
     #include "createPackingMonitor.H"
+    #include "createPrescribedGasFlow.H"
     #include "initContinuityErrs.H"
 
     Info<< "\nStarting time loop\n" << endl;
@@ -101,9 +108,22 @@ int main(int argc, char *argv[])
         gasTransport.correct();
         mug = rhog*gasTransport.nu();
 
+        if (prescribedFlow.valid())
+        {
+            prescribedFlow->correct
+            (
+                Ug, phig, runTime.value() - 0.5*runTime.deltaTValue()
+            );
+        }
+
         #include "evolveCloud.H"
 
-        while (pimple.loop())
+        if (prescribedFlow.valid())
+        {
+            prescribedFlow->correct(Ug, phig, runTime.value());
+        }
+
+        while (!prescribedFlow.valid() && pimple.loop())
         {
             #include "gasMomentumEqn.H"
 

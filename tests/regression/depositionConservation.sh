@@ -1,0 +1,24 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# depositionConservation <runDir>
+# tutorials/verification/depositionConservation shortened to 2 periods
+# (0.5 s; about 6 s CPU with basic, 40 s with dual), once with
+# averagingMethod basic and once with dual: 480 parcels starting across the
+# cyclic faces of the periodic cube.
+# At every period all parcels present and
+#     |sum eps_g V + sum parcel volumes - V_total|/V_total <= 1e-14.
+#------------------------------------------------------------------------------
+runDir="${1:?usage: depositionConservation.sh <runDir>}"
+. "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
+
+status=0
+for method in basic dual
+do
+    copyTutorial verification/depositionConservation "$runDir/$method"
+    setEntry "$runDir/$method" system/controlDict endTime 0.5
+    runAllrun "$runDir/$method" "$method" || exit 1
+    (cd "$runDir/$method" && /usr/bin/python3 \
+        depositionConservationResults.py --label "$method" --check) \
+        || status=1
+done
+exit $status
