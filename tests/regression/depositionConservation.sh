@@ -2,9 +2,10 @@
 #------------------------------------------------------------------------------
 # depositionConservation <runDir>
 # tutorials/verification/depositionConservation shortened to 2 periods
-# (0.5 s; about 6 s CPU with basic, 40 s with dual), once with
-# averagingMethod basic and once with dual: 480 parcels starting across the
-# cyclic faces of the periodic cube.
+# (0.5 s; about 6 s CPU with basic, linearHat and diffusion, 40 s with
+# dual), once per averagingMethod, the gas fraction deposited by it
+# (solidsFractionFrom averaging): 480 parcels starting across the cyclic
+# faces of the periodic cube.
 # At every period all parcels present and
 #     |sum eps_g V + sum parcel volumes - V_total|/V_total <= 1e-14.
 #------------------------------------------------------------------------------
@@ -12,7 +13,7 @@ runDir="${1:?usage: depositionConservation.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 status=0
-for method in basic dual
+for method in basic dual linearHat diffusion
 do
     copyTutorial verification/depositionConservation "$runDir/$method"
     setEntry "$runDir/$method" system/controlDict endTime 0.5

@@ -40,6 +40,11 @@ Description
     system/controlDict turns it off). Writes U.<gas>,
     p (kinematic), alpha.<gas> and alpha.<cloud> (solids fraction).
 
+    The gas fraction is one minus the solids fraction deposited per cell
+    (solidsFractionFrom cell, the default, as MPPICFoam) or by the cloud's
+    averagingMethod (solidsFractionFrom averaging, as MFiX-PIC deposits
+    with its kernel): see solidsFractionDeposition.
+
     With constant/prescribedGasFlowProperties (libmppicModels'
     prescribedGasFlow, e.g. "type vortex; period 0.25;") the gas is not
     solved: U.<gas> and phi.<gas> follow the analytic field, at mid-step
@@ -62,6 +67,7 @@ Usage
 #include "basicKinematicMPPICCloud.H"
 #include "packingMonitor.H"
 #include "SolidsSubCycle.H"
+#include "solidsFractionDeposition.H"
 #include "prescribedGasFlow.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

@@ -1,0 +1,173 @@
+#!/usr/bin/python3
+"""Settling and filling fronts of the settling-shock case at t = 1 s.
+
+Usage:
+    settlingShocksResults.py [--case DIR] [--time T] [--tolerance M]
+                             [--check] [--plot]
+
+Reads <time>/alpha.kinematicCloud (cell solids fraction), 0/C (cell
+centres) and system/mppicSeedParcelsDict (initial solids fraction, top of
+the suspension) and averages the solids fraction over each horizontal layer
+of cells. Fronts (linear interpolation between layer centres):
+  - settling front: the highest height where the layer profile falls
+    through eps_s0/2 (the top of the suspension);
+  - filling front: the lowest height above the bottom where it falls
+    through (eps_s* + eps_s0)/2 (the top of the packed bed).
+References (Vaidheeswaran et al. 2020, eqs 6-8), with Stokes drag and the
+voidage factor of eq 7,  u_r(eg) = g*(rho_p - rho_g)*d^2/(18*mu)*eg^3.65:
+  settling  y = y0 - t*eg0*u_r(eg0)                                  (eq 6)
+  filling   y = -t*(es*eg*u_r(eg*) - es0*eg0*u_r(eg0))/(es* - es0)    (eq 8)
+            with es* = 0.6, the close-pack SOLIDS fraction of the case
+            (eg* = 0.4): the seed's reference, in which the packed layer
+            still carries the hindered-settling flux es*eg*u_r(eg*);
+  filling, packed bed at rest (no solids flux through a bed on a wall):
+            y = t*es0*eg0*u_r(eg0)/(es* - es0)
+and MFiX-PIC's fronts (the seed's tables 3 and 4).
+Prints the table row; --check: exit 1 unless both fronts are within the
+tolerance (default 0.010 m) of eqs 6 and 8; --plot: settlingShocks_<es0>.png.
+"""
+import argparse
+import math
+import os
+import re
+import sys
+
+G = 9.81
+RHO_P, RHO_G, D_P, MU = 2000.0, 1000.0, 1e-3, 1e-3
+CLOSE_PACK = 0.6
+
+# Vaidheeswaran et al. (2020), tables 3 and 4: MFiX-PIC fronts at 1 s [m]
+MFIX_PIC = {0.10: (0.455, 0.067), 0.15: (0.521, 0.093), 0.20: (0.583, 0.107)}
+
+
+def slip(eg):
+    """Eq 7: Stokes slip with the voidage factor."""
+    return G*(RHO_P - RHO_G)*D_P**2/(18*MU)*eg**3.65
+
+
+def references(es0, y0, t):
+    eg0, egp = 1 - es0, 1 - CLOSE_PACK
+    settling = y0 - t*eg0*slip(eg0)
+    filling = -t*(CLOSE_PACK*egp*slip(egp) - es0*eg0*slip(eg0)) \
+        / (CLOSE_PACK - es0)
+    filling_at_rest = t*es0*eg0*slip(eg0)/(CLOSE_PACK - es0)
+    return settling, filling, filling_at_rest
+
+
+def read_internal(path):
+    text = open(path).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*"
+                  r"\((.*?)\)\s*;", text, re.S)
+    if m is None:
+        raise RuntimeError("no nonuniform internalField in " + path)
+    if m.group(1) == "vector":
+        return [tuple(float(c) for c in t) for t in
+                re.findall(r"\(([^()]+?)\s+([^()]+?)\s+([^()]+?)\)",
+                           m.group(3))]
+    return [float(v) for v in m.group(3).split()]
+
+
+def seeding(case):
+    text = open(os.path.join(case, "system", "mppicSeedParcelsDict")).read()
+    es0 = float(re.search(r"\n\s*solidsFraction\s+([^;]+);", text).group(1))
+    box = re.search(r"\n\s*box\s+\(([^)]*)\)\s*\(([^)]*)\)", text)
+    return es0, float(box.group(2).split()[1])
+
+
+def layer_profile(case, time):
+    alpha = read_internal(os.path.join(case, time, "alpha.kinematicCloud"))
+    centres = read_internal(os.path.join(case, "0", "C"))
+    layers = {}
+    for a, c in zip(alpha, centres):
+        layers.setdefault(round(c[1], 9), []).append(a)
+    ys = sorted(layers)
+    return ys, [sum(layers[y])/len(layers[y]) for y in ys]
+
+
+def crossing(ys, profile, level, from_top):
+    """Height where the profile falls through level going up; the highest
+    such crossing (from_top) or the lowest."""
+    order = range(len(ys) - 2, -1, -1) if from_top else range(len(ys) - 1)
+    for j in order:
+        if profile[j] >= level > profile[j + 1]:
+            f = (profile[j] - level)/(profile[j] - profile[j + 1])
+            return ys[j] + f*(ys[j + 1] - ys[j])
+    return float("nan")
+
+
+def plot(ys, profile, es0, fronts, refs, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(5, 6))
+    ax.plot(profile, ys, "k.-", ms=3, label="mppicPimpleFoam, layer mean")
+    colours = ("tab:blue", "tab:red")
+    for (name, ours, ref), c in zip(
+            (("settling", fronts[0], refs[0]),
+             ("filling", fronts[1], refs[1])), colours):
+        ax.axhline(ours, color=c, ls="-", lw=1,
+                   label="%s front, ours %.4f m" % (name, ours))
+        ax.axhline(ref, color=c, ls="--", lw=1,
+                   label="%s front, eq %s %.4f m"
+                   % (name, "6" if name == "settling" else "8", ref))
+    ax.axhline(refs[2], color="tab:green", ls=":", lw=1,
+               label="filling, bed at rest %.4f m" % refs[2])
+    if es0 in MFIX_PIC:
+        for v in MFIX_PIC[es0]:
+            ax.plot([0.02], [v], "o", mfc="none", color="gray")
+        ax.plot([], [], "o", mfc="none", color="gray", label="MFiX-PIC fronts")
+    ax.set_xlabel("solids fraction (layer mean)")
+    ax.set_ylabel("height y [m]")
+    ax.set_xlim(0, 0.7)
+    ax.set_ylim(0, 1)
+    ax.set_title("Settling shocks, eps_s0 = %.2f, t = 1 s" % es0)
+    ax.legend(fontsize=7, loc="upper right")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--case", default=".")
+    parser.add_argument("--time", default="1")
+    parser.add_argument("--tolerance", type=float, default=0.010)
+    parser.add_argument("--check", action="store_true")
+    parser.add_argument("--plot", action="store_true")
+    args = parser.parse_args()
+
+    es0, y0 = seeding(args.case)
+    t = float(args.time)
+    ys, profile = layer_profile(args.case, args.time)
+    settling = crossing(ys, profile, es0/2, from_top=True)
+    filling = crossing(ys, profile, (CLOSE_PACK + es0)/2, from_top=False)
+    refs = references(es0, y0, t)
+    mfix = MFIX_PIC.get(round(es0, 2), (float("nan"), float("nan")))
+
+    print("eps_s0 | front | ours [m] | eqs 6/8 [m] | ours - ref [m] | "
+          "bed at rest [m] | MFiX-PIC [m]")
+    print("%.2f | settling | %.4f | %.4f | %+.4f | - | %.3f"
+          % (es0, settling, refs[0], settling - refs[0], mfix[0]))
+    print("%.2f | filling | %.4f | %.4f | %+.4f | %.4f | %.3f"
+          % (es0, filling, refs[1], filling - refs[1], refs[2], mfix[1]))
+    print("max layer solids fraction %.4f (close pack %.2f)"
+          % (max(profile), CLOSE_PACK))
+
+    if args.plot:
+        path = os.path.join(args.case, "settlingShocks_%.2f.png" % es0)
+        plot(ys, profile, round(es0, 2), (settling, filling), refs, path)
+        print("wrote " + path)
+
+    ok = True
+    if args.check:
+        for name, ours, ref in (("settling", settling, refs[0]),
+                                ("filling", filling, refs[1])):
+            good = abs(ours - ref) <= args.tolerance
+            print("%s %s front %.4f m within %.3f m of %.4f m"
+                  % ("PASS" if good else "FAIL", name, ours, args.tolerance,
+                     ref))
+            ok = ok and good
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
