@@ -2,7 +2,8 @@
 # badInput-monitorAndSwitches <runDir>: a packingMonitor naming a cloud that
 # does not exist, one with closePackFraction 1.5, and coloringFunction with
 # case1a maybe -> FatalIOError naming the keyword (and the range), exit
-# status 1, no crash (mppicPimpleFoam); likewise capacityLimit perhaps.
+# status 1, no crash (mppicPimpleFoam); likewise capacityLimit perhaps and
+# solidsFractionFrom maybe (the message lists cell and averaging).
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
 prepareCase "$runDir/case"
@@ -32,5 +33,13 @@ setEntry "$case" constant/kinematicCloudProperties \
     "{ closePackFraction 0.6; capacityLimit perhaps; }"
 runBroken "$case" mppicPimpleFoam
 check fatal "$case/log.broken" $rc "capacityLimit" "perhaps" || status=1
+
+foamDictionary "$case/constant/kinematicCloudProperties" \
+    -entry subModels/coloringFunctionCoeffs -remove > /dev/null
+setEntry "$case" constant/kinematicCloudProperties subModels/packingModel explicit
+setEntry "$case" constant/kinematicCloudProperties solidsFractionFrom maybe
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "solidsFractionFrom" "maybe" "cell" "averaging" \
+    || status=1
 
 exit $status

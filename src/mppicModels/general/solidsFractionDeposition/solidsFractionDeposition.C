@@ -16,6 +16,27 @@ Foam::solidsFractionDeposition::methodNames
 });
 
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::solidsFractionDeposition::method
+Foam::solidsFractionDeposition::readMethod(const dictionary& dict)
+{
+    const word name
+    (
+        dict.lookupOrDefault<word>("solidsFractionFrom", methodNames[method::cell])
+    );
+
+    if (!methodNames.found(name))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ", keyword solidsFractionFrom:"
+            << " value " << name << " is not one of " << methodNames.toc()
+            << exit(FatalIOError);
+    }
+    return methodNames[name];
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::solidsFractionDeposition::solidsFractionDeposition
@@ -24,15 +45,7 @@ Foam::solidsFractionDeposition::solidsFractionDeposition
 )
 :
     cloud_(cloud),
-    method_
-    (
-        methodNames.lookupOrDefault
-        (
-            "solidsFractionFrom",
-            cloud.particleProperties(),
-            method::cell
-        )
-    )
+    method_(readMethod(cloud.particleProperties()))
 {}
 
 
