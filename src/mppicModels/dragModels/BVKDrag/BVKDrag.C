@@ -3,37 +3,18 @@
     This file is part of the mppicModels project, GPL-3.0-or-later.
 \*---------------------------------------------------------------------------*/
 
-#include "HillKochLaddDragForce.H"
+#include "BVKDrag.H"
 #include "dragCorrelations.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-template<class CloudType>
-Foam::HillKochLaddDragForce<CloudType>::HillKochLaddDragForce
-(
-    CloudType& owner,
-    const fvMesh& mesh,
-    const dictionary& dict
-)
-:
-    DenseDragForce<CloudType>(owner, mesh, dict, typeName)
-{}
-
-
-template<class CloudType>
-Foam::HillKochLaddDragForce<CloudType>::HillKochLaddDragForce
-(
-    const HillKochLaddDragForce<CloudType>& df
-)
-:
-    DenseDragForce<CloudType>(df)
+Foam::dragLaws::BVKDrag::BVKDrag(const dictionary& /*coeffs*/)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-template<class CloudType>
-Foam::scalar Foam::HillKochLaddDragForce<CloudType>::K
+Foam::scalar Foam::dragLaws::BVKDrag::K
 (
     const scalar alphag,
     const scalar slip,
@@ -42,7 +23,7 @@ Foam::scalar Foam::HillKochLaddDragForce<CloudType>::K
     const scalar mug
 ) const
 {
-    return dragCorrelations::hillKochLaddK(alphag, slip, d, rhog, mug);
+    return dragCorrelations::bvkK(alphag, slip, d, rhog, mug);
 }
 
 

@@ -3,49 +3,31 @@
     This file is part of the mppicModels project, GPL-3.0-or-later.
 \*---------------------------------------------------------------------------*/
 
-#include "StokesDragForce.H"
+#include "GidaspowDrag.H"
 #include "dragCorrelations.H"
 #include "boundedCoefficient.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-template<class CloudType>
-Foam::StokesDragForce<CloudType>::StokesDragForce
-(
-    CloudType& owner,
-    const fvMesh& mesh,
-    const dictionary& dict
-)
+Foam::dragLaws::GidaspowDrag::GidaspowDrag(const dictionary& coeffs)
 :
-    DenseDragForce<CloudType>(owner, mesh, dict, typeName),
-    voidageExponent_
+    switchFraction_
     (
         mppicCoefficients::read
         (
-            this->coeffs(),
-            "voidageExponent",
-            2.65,
-            mppicCoefficients::bounds::atLeast(0)
+            coeffs,
+            "switchFraction",
+            0.8,
+            mppicCoefficients::bounds::open(0, 1)
         )
-    )
-{}
-
-
-template<class CloudType>
-Foam::StokesDragForce<CloudType>::StokesDragForce
-(
-    const StokesDragForce<CloudType>& df
-)
-:
-    DenseDragForce<CloudType>(df),
-    voidageExponent_(df.voidageExponent_)
+    ),
+    blend_(coeffs.lookupOrDefault("blend", false))
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-template<class CloudType>
-Foam::scalar Foam::StokesDragForce<CloudType>::K
+Foam::scalar Foam::dragLaws::GidaspowDrag::K
 (
     const scalar alphag,
     const scalar slip,
@@ -54,7 +36,21 @@ Foam::scalar Foam::StokesDragForce<CloudType>::K
     const scalar mug
 ) const
 {
-    return dragCorrelations::stokesK(alphag, d, mug, voidageExponent_);
+    const scalar phi =
+        blend_
+      ? dragCorrelations::gidaspowBlendWeight(alphag, switchFraction_)
+      : scalar(alphag >= switchFraction_ ? 1 : 0);
+
+    scalar K = 0;
+    if (phi > 0)
+    {
+        K += phi*dragCorrelations::wenYuK(alphag, slip, d, rhog, mug);
+    }
+    if (phi < 1)
+    {
+        K += (1 - phi)*dragCorrelations::ergunK(alphag, slip, d, rhog, mug);
+    }
+    return K;
 }
 
 

@@ -3,37 +3,18 @@
     This file is part of the mppicModels project, GPL-3.0-or-later.
 \*---------------------------------------------------------------------------*/
 
-#include "BVKDragForce.H"
+#include "HillKochLaddDrag.H"
 #include "dragCorrelations.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-template<class CloudType>
-Foam::BVKDragForce<CloudType>::BVKDragForce
-(
-    CloudType& owner,
-    const fvMesh& mesh,
-    const dictionary& dict
-)
-:
-    DenseDragForce<CloudType>(owner, mesh, dict, typeName)
-{}
-
-
-template<class CloudType>
-Foam::BVKDragForce<CloudType>::BVKDragForce
-(
-    const BVKDragForce<CloudType>& df
-)
-:
-    DenseDragForce<CloudType>(df)
+Foam::dragLaws::HillKochLaddDrag::HillKochLaddDrag(const dictionary& /*coeffs*/)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-template<class CloudType>
-Foam::scalar Foam::BVKDragForce<CloudType>::K
+Foam::scalar Foam::dragLaws::HillKochLaddDrag::K
 (
     const scalar alphag,
     const scalar slip,
@@ -42,7 +23,7 @@ Foam::scalar Foam::BVKDragForce<CloudType>::K
     const scalar mug
 ) const
 {
-    return dragCorrelations::bvkK(alphag, slip, d, rhog, mug);
+    return dragCorrelations::hillKochLaddK(alphag, slip, d, rhog, mug);
 }
 
 

@@ -3,26 +3,19 @@
     This file is part of the mppicModels project, GPL-3.0-or-later.
 \*---------------------------------------------------------------------------*/
 
-#include "SyamlalOBrienDragForce.H"
+#include "SyamlalOBrienDrag.H"
 #include "dragCorrelations.H"
 #include "boundedCoefficient.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-template<class CloudType>
-Foam::SyamlalOBrienDragForce<CloudType>::SyamlalOBrienDragForce
-(
-    CloudType& owner,
-    const fvMesh& mesh,
-    const dictionary& dict
-)
+Foam::dragLaws::SyamlalOBrienDrag::SyamlalOBrienDrag(const dictionary& coeffs)
 :
-    DenseDragForce<CloudType>(owner, mesh, dict, typeName),
     c1_
     (
         mppicCoefficients::read
         (
-            this->coeffs(),
+            coeffs,
             "c1",
             0.8,
             mppicCoefficients::bounds::above(0)
@@ -32,7 +25,7 @@ Foam::SyamlalOBrienDragForce<CloudType>::SyamlalOBrienDragForce
     (
         mppicCoefficients::read
         (
-            this->coeffs(),
+            coeffs,
             "d1",
             2.65,
             mppicCoefficients::bounds::above(0)
@@ -41,22 +34,9 @@ Foam::SyamlalOBrienDragForce<CloudType>::SyamlalOBrienDragForce
 {}
 
 
-template<class CloudType>
-Foam::SyamlalOBrienDragForce<CloudType>::SyamlalOBrienDragForce
-(
-    const SyamlalOBrienDragForce<CloudType>& df
-)
-:
-    DenseDragForce<CloudType>(df),
-    c1_(df.c1_),
-    d1_(df.d1_)
-{}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-template<class CloudType>
-Foam::scalar Foam::SyamlalOBrienDragForce<CloudType>::K
+Foam::scalar Foam::dragLaws::SyamlalOBrienDrag::K
 (
     const scalar alphag,
     const scalar slip,
