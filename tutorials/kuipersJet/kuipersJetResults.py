@@ -1,0 +1,452 @@
+#!/usr/bin/python3
+"""Results of the Kuipers central-jet bed.
+
+Usage:
+    kuipersJetResults.py [--case DIR] [--label NAME] [--plot] [--check]
+                         [--tolerance 0.15] [--from T0] [--row] [--wallTime S]
+
+Reads what the case's function objects and solver wrote:
+  postProcessing/bedPressureDrop/0/bedPressureDrop.dat  deltaP [Pa], every step
+  postProcessing/packingMonitor/0/packingMonitor.dat    parcels, mass, largest
+                                                        cell solids fraction
+  postProcessing/profiles/<t>/*34*.xy, *64*.xy          time-averaged solids
+                                                        fraction up the bed at
+                                                        3.4 and 6.4 cm each
+                                                        side of the jet axis
+  <t>/alpha.kinematicCloudMean (or 1 - alpha.airMean)   time-averaged field
+  <t>/alpha.kinematicCloud (or 1 - alpha.air), 0/C      snapshots, cell centres
+and prints:
+  - deltaP over the statistics window (from --from, default the averaging
+    start averageStart of system/controlDict): mean / bed weight, standard
+    deviation and half the 5-95 % range (fluctuation amplitude), in Pa; the
+    bed weight is m g/(0.57 m x 0.015 m), over the whole bottom;
+  - the largest cell solids fraction over all steps, the 99th percentile of
+    the per-step largest value, the smallest gas fraction, against the
+    bound max(1.05 alpha_cp, alpha_cp + V_parcel/V_cell) (a cell-based field
+    moves in steps of one parcel, 0.12 of a cell here);
+  - bed expansion: the height where the time-averaged solids fraction,
+    averaged across the width, drops below 0.05;
+  - the mean absolute difference of the time-averaged profiles (left and
+    right of the jet averaged) from Kuipers' measured points, and the same
+    for MFiX-PIC's curve (kuipersJetProfiles.csv, copied from seed 1 Fig. 6);
+    only heights the profile reaches are compared.
+--row prints one markdown table row instead (for compareSolvers). --plot
+writes kuipersJet_<label>_{pressureDrop,packing,profiles,snapshots}.png.
+--check: exit status 1 unless the parcel count and mass stay at their first
+values, the largest cell solids fraction keeps the bound, and the mean deltaP
+is within --tolerance of the bed weight.
+"""
+import argparse
+import glob
+import math
+import os
+import re
+import sys
+
+WIDTH, DEPTH, G = 0.57, 0.015, 9.81
+CLOSE_PACK, AXIS = 0.62, 0.285
+CELL_VOLUME = 0.0075*0.01*0.0075
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def read_columns(path):
+    rows = []
+    for line in open(path):
+        if line.strip() and not line.startswith("#"):
+            try:
+                rows.append([float(v) for v in line.split()])
+            except ValueError:
+                pass
+    return rows
+
+
+def function_object_table(case, name):
+    """Rows of postProcessing/<name>/<start>/<name>.dat, restarts joined."""
+    rows = []
+    for path in sorted(glob.glob(os.path.join(case, "postProcessing", name, "*",
+                                              name + ".dat")),
+                       key=lambda p: float(p.split(os.sep)[-2])):
+        new = read_columns(path)
+        if new:
+            rows = [r for r in rows if r[0] < new[0][0]] + new
+    return rows
+
+
+def control_entry(case, key):
+    m = re.search(r"^%s\s+([^;]+);" % key,
+                  open(os.path.join(case, "system", "controlDict")).read(), re.M)
+    return m.group(1).strip() if m else None
+
+
+def time_dirs(case):
+    out = []
+    for d in os.listdir(case):
+        try:
+            out.append((float(d), d))
+        except ValueError:
+            pass
+    return sorted(out)
+
+
+def internal_field(path):
+    text = open(path).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\((.*?)\)\s*;",
+                  text, re.S)
+    if m is None:
+        m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
+        return float(m.group(1))
+    if m.group(1) == "vector":
+        return [tuple(map(float, v.split()))
+                for v in re.findall(r"\(([^()]*)\)", m.group(3))]
+    return [float(v) for v in m.group(3).split()]
+
+
+def solids_field(case, time, mean=False):
+    """Cell solids fraction: alpha.kinematicCloud[Mean], else 1 - alpha.air."""
+    suffix = "Mean" if mean else ""
+    path = os.path.join(case, time, "alpha.kinematicCloud" + suffix)
+    if os.path.exists(path):
+        return internal_field(path)
+    path = os.path.join(case, time, "alpha.air" + suffix)
+    if os.path.exists(path):
+        return [1 - a for a in internal_field(path)]
+    return None
+
+
+def cell_grid(case):
+    """Cell centres -> (column, row) indices, the x and y of the columns/rows."""
+    centres = internal_field(os.path.join(case, "0", "C"))
+    xs = sorted(set(round(c[0], 7) for c in centres))
+    ys = sorted(set(round(c[1], 7) for c in centres))
+    ix = {x: i for i, x in enumerate(xs)}
+    iy = {y: j for j, y in enumerate(ys)}
+    return [(ix[round(c[0], 7)], iy[round(c[1], 7)]) for c in centres], xs, ys
+
+
+def to_grid(values, cells, nx, ny):
+    """Average over the depth: grid[j][i]."""
+    total = [[0.0]*nx for _ in range(ny)]
+    count = [[0]*nx for _ in range(ny)]
+    for v, (i, j) in zip(values, cells):
+        total[j][i] += v
+        count[j][i] += 1
+    return [[t/max(c, 1) for t, c in zip(tr, cr)] for tr, cr in zip(total, count)]
+
+
+def bed_expansion(grid, ys, level=0.05):
+    rows = [sum(r)/len(r) for r in grid]
+    dense = [j for j, a in enumerate(rows) if a >= level]
+    if not dense:
+        return 0.0
+    top = max(dense)
+    if top + 1 >= len(rows):
+        return ys[top] + 0.5*(ys[1] - ys[0])
+    a0, a1 = rows[top], rows[top + 1]
+    return ys[top] + (a0 - level)/(a0 - a1)*(ys[top + 1] - ys[top])
+
+
+def sampled_profiles(case):
+    """{3.4: (h, eps_s), 6.4: ...} from the latest sets output, both sides."""
+    times = sorted(glob.glob(os.path.join(case, "postProcessing", "profiles", "*")),
+                   key=lambda p: float(os.path.basename(p)))
+    if not times:
+        return {}
+    out = {}
+    for tag, x_cm in (("34", 3.4), ("64", 6.4)):
+        sides = []
+        for side in ("left", "right"):
+            files = glob.glob(os.path.join(times[-1], side + tag + "_*.xy"))
+            if not files:
+                continue
+            fields = os.path.basename(files[0])[:-3].split("_")[1:]
+            rows = read_columns(files[0])
+            if "alpha.kinematicCloudMean" in fields:
+                k = 1 + fields.index("alpha.kinematicCloudMean")
+                sides.append([(r[0], r[k]) for r in rows])
+            elif "alpha.airMean" in fields:
+                k = 1 + fields.index("alpha.airMean")
+                sides.append([(r[0], 1 - r[k]) for r in rows])
+        if sides:
+            h = [p[0] for p in sides[0]]
+            eps = [sum(s[i][1] for s in sides)/len(sides) for i in range(len(h))]
+            out[x_cm] = (h, eps)
+    return out
+
+
+def reference_profiles():
+    data = {}
+    for line in open(os.path.join(HERE, "kuipersJetProfiles.csv")):
+        if line.startswith(("#", "source")):
+            continue
+        src, x, h, e = line.strip().split(",")
+        data.setdefault((src, float(x)), []).append((float(h)/100, float(e)))
+    return {k: sorted(v) for k, v in data.items()}
+
+
+def interpolate(xs, ys, x):
+    if x < xs[0] or x > xs[-1]:
+        return None
+    for k in range(1, len(xs)):
+        if x <= xs[k]:
+            w = (x - xs[k - 1])/(xs[k] - xs[k - 1]) if xs[k] > xs[k - 1] else 0
+            return ys[k - 1] + w*(ys[k] - ys[k - 1])
+    return ys[-1]
+
+
+def mean_abs_difference(h, eps, measured):
+    diffs = [abs(v - e) for hm, e in measured
+             for v in [interpolate(h, eps, hm)] if v is not None]
+    return sum(diffs)/len(diffs) if diffs else float("nan")
+
+
+def percentile(values, q):
+    s = sorted(values)
+    if not s:
+        return float("nan")
+    pos = q/100*(len(s) - 1)
+    lo = int(math.floor(pos))
+    hi = min(lo + 1, len(s) - 1)
+    return s[lo] + (pos - lo)*(s[hi] - s[lo])
+
+
+def summary(case, t0=None):
+    """Every number of the case, as a dict (missing pieces are absent)."""
+    res = {}
+    if t0 is None:
+        t0 = float(control_entry(case, "averageStart") or 0)
+    res["t0"] = t0
+    dp = function_object_table(case, "bedPressureDrop")
+    mon = function_object_table(case, "packingMonitor")
+    res["dp"], res["monitor"] = dp, mon
+    if mon:
+        res["endTime"] = mon[-1][0]
+        res["nParcels"] = (mon[0][1], mon[-1][1])
+        res["mass"] = (mon[0][2], mon[-1][2])
+        res["weight"] = mon[0][2]*G/(WIDTH*DEPTH)
+        res["parcelFraction"] = mon[0][2]/mon[0][1]/2660/CELL_VOLUME
+        res["bound"] = max(1.05*CLOSE_PACK, CLOSE_PACK + res["parcelFraction"])
+        cell = [r[4] for r in mon]
+        res["maxCell"] = max(cell)
+        res["p99Cell"] = percentile(cell, 99)
+        res["maxAveraged"] = max(r[3] for r in mon)
+        res["minGas"] = min(r[6] for r in mon)
+    window = [r[3] for r in dp if r[0] >= t0 - 1e-9]
+    if window and "weight" in res:
+        mean = sum(window)/len(window)
+        res["dpMean"] = mean
+        res["dpRatio"] = mean/res["weight"]
+        res["dpStd"] = math.sqrt(sum((v - mean)**2 for v in window)/len(window))
+        res["dpAmplitude"] = 0.5*(percentile(window, 95) - percentile(window, 5))
+    times = time_dirs(case)
+    if os.path.exists(os.path.join(case, "0", "C")) and len(times) > 1:
+        cells, xs, ys = cell_grid(case)
+        res["grid"] = (cells, xs, ys)
+        for t, name in reversed(times):
+            mean = solids_field(case, name, mean=True)
+            if mean is not None:
+                grid = to_grid(mean, cells, len(xs), len(ys))
+                res["meanGrid"] = (name, grid)
+                res["expansion"] = bed_expansion(grid, ys)
+                break
+    res["profiles"] = sampled_profiles(case)
+    ref = reference_profiles()
+    res["mad"] = {}
+    for x_cm in (3.4, 6.4):
+        measured = ref[("kuipers1990", x_cm)]
+        mfix = ref[("mfix_pic", x_cm)]
+        res["mad"][("mfix_pic", x_cm)] = mean_abs_difference(
+            [p[0] for p in mfix], [p[1] for p in mfix], measured)
+        if x_cm in res["profiles"]:
+            h, eps = res["profiles"][x_cm]
+            res["mad"][("ours", x_cm)] = mean_abs_difference(h, eps, measured)
+    return res
+
+
+def fmt(res, key, form, scale=1.0):
+    return form % (res[key]*scale) if key in res else "-"
+
+
+def print_report(res, label):
+    print("Kuipers jet, %s: %s s simulated, statistics from %g s"
+          % (label, fmt(res, "endTime", "%g"), res["t0"]))
+    if "nParcels" in res:
+        print("  parcels %d -> %d, mass %.6g -> %.6g kg, bed weight %.1f Pa"
+              % (res["nParcels"] + res["mass"] + (res["weight"],)))
+    print("  deltaP mean %s Pa = %s x bed weight, std %s Pa, amplitude "
+          "(half 5-95 %% range) %s Pa"
+          % (fmt(res, "dpMean", "%.1f"), fmt(res, "dpRatio", "%.3f"),
+             fmt(res, "dpStd", "%.1f"), fmt(res, "dpAmplitude", "%.1f")))
+    print("  reference deltaP/weight (seed 1 Fig. 7, 20-24 s): MFiX-PIC 0.916,"
+          " MFiX-TFM 1.026, CPFD 1.089")
+    if "maxCell" in res:
+        print("  cell solids fraction: max %.4f, 99th percentile of the per-step"
+              " max %.4f, max of the model's averaging %.4f, min gas fraction"
+              " %.4f; bound max(1.05*%.2f, %.2f + %.4f) = %.4f"
+              % (res["maxCell"], res["p99Cell"], res["maxAveraged"],
+                 res["minGas"], CLOSE_PACK, CLOSE_PACK, res["parcelFraction"],
+                 res["bound"]))
+    print("  bed expansion (time-averaged eps_s < 0.05 above): %s m (initial 0.5 m)"
+          % fmt(res, "expansion", "%.3f"))
+    for x_cm in (3.4, 6.4):
+        print("  profile %.1f cm: mean |difference| from Kuipers' points: ours"
+              " %s, MFiX-PIC %.4f" % (
+                  x_cm, "%.4f" % res["mad"][("ours", x_cm)]
+                  if ("ours", x_cm) in res["mad"] else "-",
+                  res["mad"][("mfix_pic", x_cm)]))
+
+
+TABLE_HEAD = ("| run | deltaP / weight | deltaP amplitude [Pa] | max cell eps_s "
+              "| 99th pct | min eps_g | bed expansion [m] | MAD 3.4 cm | MAD 6.4 cm "
+              "| wall s / sim s | diverged |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|")
+
+
+def table_row(res, label, wall, failure):
+    mad = res.get("mad", {})
+    per_sim = "-"
+    if wall and res.get("endTime"):
+        per_sim = "%.0f" % (wall/res["endTime"])
+    return "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        label, fmt(res, "dpRatio", "%.3f"), fmt(res, "dpAmplitude", "%.0f"),
+        fmt(res, "maxCell", "%.3f"), fmt(res, "p99Cell", "%.3f"),
+        fmt(res, "minGas", "%.3f"), fmt(res, "expansion", "%.3f"),
+        "%.3f" % mad[("ours", 3.4)] if ("ours", 3.4) in mad else "-",
+        "%.3f" % mad[("ours", 6.4)] if ("ours", 6.4) in mad else "-",
+        per_sim, failure or "no")
+
+
+def plot(res, case, label):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    names = []
+
+    def save(fig, what):
+        name = os.path.join(case, "kuipersJet_%s_%s.png" % (label, what))
+        fig.tight_layout()
+        fig.savefig(name, dpi=90)
+        plt.close(fig)
+        names.append(name)
+
+    if res["dp"] and "weight" in res:
+        fig, ax = plt.subplots(figsize=(8, 3.5))
+        ax.plot([r[0] for r in res["dp"]], [r[3] for r in res["dp"]], lw=0.6,
+                label="%s, inlet to outlet" % label)
+        ax.axhline(res["weight"], color="k", lw=1, label="bed weight %.0f Pa"
+                   % res["weight"])
+        if "dpMean" in res:
+            ax.hlines(res["dpMean"], res["t0"], res["endTime"], color="r",
+                      label="mean from %g s: %.3f x weight" % (res["t0"],
+                                                             res["dpRatio"]))
+        ax.axhline(0.916*res["weight"], color="g", ls="--", lw=0.8,
+                   label="MFiX-PIC mean 20-24 s (0.916 x)")
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("bed pressure drop [Pa]")
+        ax.legend(fontsize=7)
+        save(fig, "pressureDrop")
+
+    if res["monitor"]:
+        fig, ax = plt.subplots(figsize=(8, 3.5))
+        ax.plot([r[0] for r in res["monitor"]], [r[4] for r in res["monitor"]],
+                lw=0.6, label="max cell solids fraction")
+        ax.axhline(CLOSE_PACK, color="k", lw=0.8, label="close pack 0.62")
+        ax.axhline(res["bound"], color="r", lw=0.8, label="bound %.3f"
+                   % res["bound"])
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("solids fraction")
+        ax.set_title(label)
+        ax.legend(fontsize=7)
+        save(fig, "packing")
+
+    if res["profiles"]:
+        ref = reference_profiles()
+        fig, axes = plt.subplots(1, 2, figsize=(9, 4), sharey=True)
+        for ax, x_cm in zip(axes, (3.4, 6.4)):
+            m = ref[("kuipers1990", x_cm)]
+            p = ref[("mfix_pic", x_cm)]
+            ax.plot([v[0] for v in p], [v[1] for v in p], "g-", lw=1,
+                    label="MFiX-PIC (seed 1 Fig. 6)")
+            ax.plot([v[0] for v in m], [v[1] for v in m], "ko", ms=3,
+                    label="Kuipers (1990), measured")
+            if x_cm in res["profiles"]:
+                h, eps = res["profiles"][x_cm]
+                ax.plot(h, eps, "b-", lw=1.5, label="%s, MAD %.3f" % (
+                    label, res["mad"].get(("ours", x_cm), float("nan"))))
+            ax.set_title("%.1f cm from the jet axis" % x_cm)
+            ax.set_xlabel("height [m]")
+            ax.set_xlim(0, 0.8)
+            ax.legend(fontsize=7)
+        axes[0].set_ylabel("time-averaged solids fraction")
+        save(fig, "profiles")
+
+    if "grid" in res:
+        cells, xs, ys = res["grid"]
+        shots = [name for t, name in time_dirs(case) if t > 0][-4:]
+        panels = [(n, solids_field(case, n)) for n in shots]
+        panels = [(n, f) for n, f in panels if f is not None]
+        if "meanGrid" in res:
+            panels.append(("mean", None))
+        if panels:
+            fig, axes = plt.subplots(1, len(panels), figsize=(2.2*len(panels) + 1, 4.4),
+                                     squeeze=False, constrained_layout=True)
+            extent = (0, WIDTH, 0, ys[-1] + 0.5*(ys[1] - ys[0]))
+            for ax, (name, field) in zip(axes[0], panels):
+                grid = res["meanGrid"][1] if field is None else \
+                    to_grid(field, cells, len(xs), len(ys))
+                im = ax.imshow(grid, origin="lower", extent=extent, vmin=0,
+                               vmax=0.65, cmap="viridis", aspect="equal")
+                ax.set_title("time average from %g s" % res["t0"]
+                             if field is None else "t = %s s" % name, fontsize=8)
+                ax.set_xlabel("x [m]", fontsize=8)
+                ax.tick_params(labelsize=7)
+            axes[0][0].set_ylabel("y [m]")
+            fig.colorbar(im, ax=axes[0].tolist(), shrink=0.8,
+                         label="solids fraction")
+            fig.savefig(os.path.join(case, "kuipersJet_%s_snapshots.png" % label),
+                        dpi=90)
+            plt.close(fig)
+            names.append(os.path.join(case, "kuipersJet_%s_snapshots.png" % label))
+    return names
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--case", default=".")
+    parser.add_argument("--label", default="coloringFunction")
+    parser.add_argument("--plot", action="store_true")
+    parser.add_argument("--check", action="store_true")
+    parser.add_argument("--tolerance", type=float, default=0.15)
+    parser.add_argument("--from", dest="t0", type=float, default=None)
+    parser.add_argument("--row", action="store_true")
+    parser.add_argument("--wallTime", type=float, default=None)
+    parser.add_argument("--failure", default="")
+    args = parser.parse_args()
+
+    res = summary(args.case, args.t0)
+    if args.row:
+        print(table_row(res, args.label, args.wallTime, args.failure))
+    else:
+        print_report(res, args.label)
+    if args.plot:
+        for name in plot(res, args.case, args.label):
+            print("  wrote " + name)
+
+    if args.check:
+        checks = [
+            ("parcel count constant", "nParcels" in res
+             and res["nParcels"][0] == res["nParcels"][1]),
+            ("cloud mass constant", "mass" in res
+             and abs(res["mass"][1]/res["mass"][0] - 1) < 1e-9),
+            ("max cell solids fraction <= bound", "maxCell" in res
+             and res["maxCell"] <= res["bound"] + 1e-12),
+            ("mean deltaP within %g of the bed weight" % args.tolerance,
+             "dpRatio" in res and abs(res["dpRatio"] - 1) <= args.tolerance),
+        ]
+        for what, ok in checks:
+            print(("PASS " if ok else "FAIL ") + what)
+        return 0 if all(ok for _, ok in checks) else 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
