@@ -9,9 +9,17 @@
 #     sqrt(1*1*1/160) = 0.0791 gives ny = round(12.65) = 13 and
 #     nx = round(160/13) = 12: 156 parcels, all in the region, 8-12 per cell;
 #   - nParticle = 0.3*0.1/(156*pi/6*1e-6) = 367.2806379...
+#   - arrangement cell on the same region: exactly 10 parcels in each of the
+#     16 cells of 0.25 x 0.25 x 0.1 m; the split of a cell closest to cubes
+#     is 2 x 5 x 1 (sides 0.125, 0.05, 0.1: ratio 2.5, tied with 5 x 2 x 1,
+#     the first in the search; 10 x 1 x 1 gives 10, 1 x 1 x 10 gives 25), so
+#     the parcels of a cell lie within +-0.25 sub-spacing of
+#     x = 0.0625 + 0.125 i, y = 0.025 + 0.05 j;
+#     nParticle = 0.3*0.1/(160*pi/6*1e-6) = 358.09862195...
 #   - bad input: solidsFraction 1.2, jitter 1, parcelsPerCell 0, region
-#     sphere, an unknown cellZone and a box with min above max each stop
-#     with a FatalIOError naming the keyword.
+#     sphere, an unknown cellZone, a box with min above max, arrangement
+#     spiral, and parcelsPerCell 2.5 with arrangement cell each stop with a
+#     FatalIOError naming the keyword.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: seedParcels.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -33,6 +41,7 @@ parcelsPerCell  ${3:-10};
 diameter        0.01;
 jitter          ${4:-0.5};
 seed            3;
+arrangement     ${6:-lattice};
 DICT
 }
 
@@ -68,6 +77,41 @@ check(abs(nParticle/expected - 1) < 1e-12,
 sys.exit(1 if fails else 0)
 PY
 
+writeDict box 0.3 10 0.5 "(0 0 0) (1 1 0.1)" cell
+mppicSeedParcels -case "$case" > "$runDir/log.seedCell" 2>&1 || exit 1
+/usr/bin/python3 - "$case" <<'PY' || exit 1
+import math, re, sys
+case = sys.argv[1]
+text = open(case + "/constant/kinematicCloudPositions").read()
+pts = [tuple(map(float, t)) for t in
+       re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
+seeded = open(case + "/constant/seededParcels").read()
+nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
+fails = 0
+def check(ok, what):
+    global fails
+    print(("PASS " if ok else "FAIL ") + what)
+    fails += not ok
+counts = {}
+for x, y, z in pts:
+    key = (min(int(x/0.25), 3), min(int(y/0.25), 3))
+    counts[key] = counts.get(key, 0) + 1
+check(len(pts) == 160 and len(counts) == 16
+      and all(c == 10 for c in counts.values()),
+      "arrangement cell: 10 parcels in each of the 16 cells: %s"
+      % sorted(counts.values()))
+def near(v, h, origin):
+    k = round((v - origin)/h)
+    return abs(v - origin - k*h) <= 0.25*h + 1e-6
+check(all(near(x, 0.125, 0.0625) and near(y, 0.05, 0.025) and 0 <= z <= 0.1
+          for x, y, z in pts),
+      "parcels within a quarter sub-spacing of the 2 x 5 x 1 sub-box centres")
+expected = 0.3*0.1/(160*math.pi/6*1e-6)
+check(abs(nParticle/expected - 1) < 1e-12,
+      "nParticle %.15g = 0.3*0.1/(160*pi/6*1e-6) = %.15g" % (nParticle, expected))
+sys.exit(1 if fails else 0)
+PY
+
 status=0
 for bad in "box 1.2 10 0.5:solidsFraction" "box 0.3 10 1:jitter" \
            "box 0.3 0 0.5:parcelsPerCell" "sphere 0.3 10 0.5:region" \
@@ -85,4 +129,12 @@ writeDict box 0.3 10 0.5 "(1 1 0.1) (0 0 0)"
 mppicSeedParcels -case "$case" > "$runDir/log.bad.box" 2>&1
 rc=$?
 check fatal "$runDir/log.bad.box" $rc "keyword box" "min < max" || status=1
+writeDict box 0.3 10 0.5 "(0 0 0) (1 1 0.1)" spiral
+mppicSeedParcels -case "$case" > "$runDir/log.bad.arrangement" 2>&1
+rc=$?
+check fatal "$runDir/log.bad.arrangement" $rc "arrangement" "spiral" || status=1
+writeDict box 0.3 2.5 0.5 "(0 0 0) (1 1 0.1)" cell
+mppicSeedParcels -case "$case" > "$runDir/log.bad.perCell" 2>&1
+rc=$?
+check fatal "$runDir/log.bad.perCell" $rc "parcelsPerCell" "integer" || status=1
 exit $status

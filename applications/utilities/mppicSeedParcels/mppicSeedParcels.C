@@ -15,11 +15,19 @@ Description
     Poisson over-packing of random seeding (at 5 parcels per cell, random
     seeding puts some cells at twice the mean).
 
-    The lattice has N parcels per mean cell volume of the region (counts
-    per direction rounded one direction at a time, so that a region one
-    cell deep still gets N per cell); each lattice point moves by a
-    uniform random offset in [-jitter*h/2, jitter*h/2] per direction and is
-    kept when it lies in a cell of the region. Each parcel carries
+    Two arrangements (parcelArrangements.H):
+    - cell: exactly N parcels in every cell of the region, at the centres
+      of the N sub-boxes of the cell's bounding box that are closest to
+      cubes (for N = 5 in a 0.75 x 1 x 0.75 cm cell: five stacked along
+      y), each moved by a uniform random offset in [-jitter*h/2,
+      jitter*h/2] per direction. Use it for cells that are not cubes;
+    - lattice (default): one lattice over the region's bounding box with N
+      points per mean cell volume (counts per direction rounded one
+      direction at a time, so that a region one cell deep still gets N per
+      cell), jittered likewise, a point kept when it lies in a cell of the
+      region. On cubic cells it gives N per cell on average; on cells that
+      are not cubes the lattice and the cells beat: on the Kuipers jet's
+      0.75 x 1 cm cells 2 to 12 parcels per cell for N = 5. Each parcel carries
         nParticle = alpha_s*V_region/(nParcels*pi*d^3/6)
     particles, so that the seeded solids volume is alpha_s*V_region exactly.
 
@@ -34,6 +42,7 @@ Usage
     solidsFraction  0.3;
     parcelsPerCell  10;
     diameter        2e-4;           // particle diameter [m]
+    arrangement     cell;           // cell or lattice
     jitter          0.5;
     seed            1;
     positionsFile   kinematicCloudPositions;    // in constant/
@@ -45,8 +54,9 @@ Usage
         box            | min and max corners [m]               | (region box) | min < max
         cellZone       | name of the cellZone                  | (region cellZone) |
         solidsFraction | target solids fraction                | (required) | (0, 1)
-        parcelsPerCell | parcels per cell                      | (required) | [1, inf)
+        parcelsPerCell | parcels per cell                      | (required) | [1, inf), an integer with cell
         diameter       | particle diameter [m]                 | (required) | (0, inf)
+        arrangement    | cell (N per cell) or lattice           | lattice | cell, lattice
         jitter         | random offset, fraction of the spacing | 0.5    | [0, 1)
         seed           | random seed                           | 1       | integer
         positionsFile  | output file in constant/              | kinematicCloudPositions |
@@ -117,6 +127,10 @@ boolList regionCells(const fvMesh& mesh, const dictionary& dict)
 }
 
 
+#include "parcelArrangements.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
 int main(int argc, char *argv[])
 {
     argList::addNote
@@ -156,20 +170,15 @@ int main(int argc, char *argv[])
 
     const boolList inRegion(regionCells(mesh, dict));
 
-    // Region volume and bounds
+    // Region volume
     scalar regionVolume = 0;
     label nRegionCells = 0;
-    boundBox bounds(boundBox::invertedBox);
     forAll(inRegion, celli)
     {
         if (inRegion[celli])
         {
             regionVolume += mesh.V()[celli];
             ++nRegionCells;
-            for (const label pointi : mesh.cellPoints()[celli])
-            {
-                bounds.add(mesh.points()[pointi]);
-            }
         }
     }
     if (nRegionCells == 0)
@@ -179,47 +188,32 @@ int main(int argc, char *argv[])
             << exit(FatalIOError);
     }
 
-    // Lattice with perCell points per mean cell volume: the counts per
-    // direction are rounded one direction at a time, so that thin regions
-    // (one cell deep) still get the intended total
-    const vector span = bounds.span();
-    const scalar nTarget =
-        perCell*nRegionCells*(span.x()*span.y()*span.z())/regionVolume;
-    const scalar spacing = Foam::cbrt(span.x()*span.y()*span.z()/nTarget);
-    const label nz = max(1, label(span.z()/spacing + 0.5));
-    const scalar spacingXY = Foam::sqrt(span.x()*span.y()*nz/nTarget);
-    const label ny = max(1, label(span.y()/spacingXY + 0.5));
-    const label nx = max(1, label(nTarget/(nz*ny) + 0.5));
-    const vector step(span.x()/nx, span.y()/ny, span.z()/nz);
-
     Random rndGen(seed);
-    DynamicList<point> positions(nx*ny*nz);
+    const word arrangement(dict.lookupOrDefault<word>("arrangement", "lattice"));
 
-    for (label k = 0; k < nz; ++k)
+    DynamicList<point> positions;
+    if (arrangement == "lattice")
     {
-        for (label j = 0; j < ny; ++j)
+        positions = latticePositions(mesh, inRegion, perCell, jitter, rndGen);
+    }
+    else if (arrangement == "cell")
+    {
+        if (perCell != label(perCell))
         {
-            for (label i = 0; i < nx; ++i)
-            {
-                const vector offset
-                (
-                    jitter*(rndGen.sample01<scalar>() - 0.5),
-                    jitter*(rndGen.sample01<scalar>() - 0.5),
-                    jitter*(rndGen.sample01<scalar>() - 0.5)
-                );
-                const point pt
-                (
-                    bounds.min()
-                  + cmptMultiply(vector(i + 0.5, j + 0.5, k + 0.5) + offset, step)
-                );
-
-                const label celli = mesh.findCell(pt);
-                if (celli >= 0 && inRegion[celli])
-                {
-                    positions.append(pt);
-                }
-            }
+            FatalIOErrorInFunction(dict)
+                << "Dictionary " << dict.name() << ", keyword parcelsPerCell: "
+                << "value " << perCell << " must be an integer with "
+                << "arrangement cell" << exit(FatalIOError);
         }
+        positions =
+            cellPositions(mesh, inRegion, label(perCell), jitter, rndGen);
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ", keyword arrangement: value "
+            << arrangement << " is not one of (lattice cell)"
+            << exit(FatalIOError);
     }
 
     const scalar particleVolume = constant::mathematical::pi/6*pow3(diameter);
@@ -264,7 +258,7 @@ int main(int argc, char *argv[])
 
     Info<< "Seeded " << positionsIO.size() << " parcels in " << nRegionCells
         << " cells (" << scalar(positionsIO.size())/nRegionCells
-        << " per cell), lattice " << nx << " x " << ny << " x " << nz
+        << " per cell), arrangement " << arrangement
         << nl << "nParticle = " << nParticle << " for solids fraction "
         << alpha << " (solids volume " << solidsVolume << " m3)" << nl
         << "Wrote constant/" << positionsFile << " and constant/seededParcels"
