@@ -14,13 +14,18 @@ Description
     - same p with a density field rho.air = 1.2:
         deltaP = 1.2*80 = 96 Pa
     - p in Pa, pPa = 1000 - 200*y: deltaP = 400 Pa, whatever rhoInf
+    - bed weight per area of a cloud holding one parcel of 1000 beads of
+      1 mm, 2500 kg/m3 (mass 1000*2500*pi/6*1e-9 kg): m*9.81/A with A the
+      bottom patch's area 1 m x 0.1 m = 0.1 m2, or crossSection 0.05 m2;
     - bad input: unknown patch, lowerPatch == upperPatch, rhoInf <= 0,
-      missing rhoInf all raise FatalIOError naming the keyword.
+      missing rhoInf, crossSection <= 0 all raise FatalIOError naming the
+      keyword.
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "bedPressureDrop.H"
+#include "basicKinematicMPPICCloud.H"
 #include "unitTest.H"
 
 using namespace Foam;
@@ -155,6 +160,79 @@ int main(int argc, char *argv[])
         dict = settings("bottom", "top");
         dict.remove("rhoInf");
         checkTrue("missing rhoInf rejected", rejects(runTime, dict, "rhoInf"));
+
+        dict = settings("bottom", "top");
+        dict.add("crossSection", -0.05);
+        checkTrue
+        (
+            "crossSection = -0.05 rejected",
+            rejects(runTime, dict, "crossSection")
+        );
+    }
+
+    // Weight per area of a cloud with one parcel
+    {
+        auto uniform = [&](const word& name, const dimensionSet& dims, scalar v)
+        {
+            return new volScalarField
+            (
+                IOobject(name, runTime.timeName(), mesh),
+                mesh,
+                dimensionedScalar(name, dims, v)
+            );
+        };
+        autoPtr<volScalarField> rhoAir(uniform("rhoAir", dimDensity, 1.2));
+        autoPtr<volScalarField> muAir
+        (
+            uniform("mu.air", dimDynamicViscosity, 1.8e-5)
+        );
+        autoPtr<volScalarField> alphaAir(uniform("alpha.air", dimless, 1));
+        volVectorField U
+        (
+            IOobject("U.air", runTime.timeName(), mesh),
+            mesh,
+            dimensionedVector(dimVelocity, Zero)
+        );
+        const uniformDimensionedVectorField g
+        (
+            IOobject("g", runTime.constant(), mesh, IOobject::MUST_READ)
+        );
+        basicKinematicMPPICCloud cloud
+        (
+            "kinematicCloud", rhoAir(), U, muAir(), g
+        );
+
+        const point centre(0.5, 0.5, 0.05);
+        auto* p = new basicKinematicMPPICCloud::parcelType
+        (
+            mesh, centre, mesh.findCell(centre)
+        );
+        p->d() = 1e-3;
+        p->rho() = 2500;
+        p->nParticle() = 1000;
+        cloud.addParticle(p);
+
+        const scalar mass =
+            1000*2500*constant::mathematical::pi/6*1e-9;
+
+        dictionary dict(settings("bottom", "top"));
+        dict.add("cloud", "kinematicCloud");
+        functionObjects::bedPressureDrop fo("dpCloud", runTime, dict);
+        checkClose
+        (
+            "weight per area over the bottom patch (0.1 m2)",
+            fo.bedWeightPerArea(),
+            mass*9.81/0.1
+        );
+
+        dict.add("crossSection", 0.05);
+        functionObjects::bedPressureDrop fo2("dpCloudSection", runTime, dict);
+        checkClose
+        (
+            "weight per area over crossSection 0.05 m2",
+            fo2.bedWeightPerArea(),
+            mass*9.81/0.05
+        );
     }
 
     return summary();

@@ -8,6 +8,7 @@
 #include "kinematicCloud.H"
 #include "gravityMeshObject.H"
 #include "addToRunTimeSelectionTable.H"
+#include "boundedCoefficient.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -114,7 +115,8 @@ Foam::functionObjects::bedPressureDrop::bedPressureDrop
     pName_("p"),
     rhoName_("rhoInf"),
     rhoInf_(0),
-    cloudName_()
+    cloudName_(),
+    crossSection_(0)
 {
     read(dict);
 
@@ -162,6 +164,18 @@ bool Foam::functionObjects::bedPressureDrop::read(const dictionary& dict)
 
     cloudName_ = dict.lookupOrDefault<word>("cloud", word::null);
 
+    crossSection_ = 0;
+    if (dict.found("crossSection"))
+    {
+        crossSection_ =
+            mppicCoefficients::read
+            (
+                dict,
+                "crossSection",
+                mppicCoefficients::bounds::above(0)
+            );
+    }
+
     return true;
 }
 
@@ -194,7 +208,10 @@ Foam::scalar Foam::functionObjects::bedPressureDrop::bedWeightPerArea() const
 
     const kinematicCloud& cloud = lookupObject<kinematicCloud>(cloudName_);
     const scalar magG = mag(meshObjects::gravity::New(time_).value());
-    const scalar area = gSum(mesh_.boundary()[lowerPatchi_].magSf());
+    const scalar area =
+        crossSection_ > 0
+      ? crossSection_
+      : gSum(mesh_.boundary()[lowerPatchi_].magSf());
 
     // massInSystem() sums this processor's parcels only
     const scalar mass = returnReduce(cloud.massInSystem(), sumOp<scalar>());
