@@ -49,9 +49,12 @@ writeDict
 mppicSeedParcels -case "$case" > "$runDir/log.seed" 2>&1 || exit 1
 cat "$runDir/log.seed" | tail -4
 
-/usr/bin/python3 - "$case" <<'PY' || exit 1
+# checkSeeding <lattice|cell>: the positions and nParticle just written
+checkSeeding()
+{
+    /usr/bin/python3 - "$case" "$1" <<'PY'
 import math, re, sys
-case = sys.argv[1]
+case, mode = sys.argv[1], sys.argv[2]
 text = open(case + "/constant/kinematicCloudPositions").read()
 pts = [tuple(map(float, t)) for t in
        re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
@@ -62,55 +65,39 @@ def check(ok, what):
     global fails
     print(("PASS " if ok else "FAIL ") + what)
     fails += not ok
-check(len(pts) == 156, "156 parcels (%d)" % len(pts))
-check(all(0 <= x <= 1 and 0 <= y <= 1 and 0 <= z <= 0.1 for x, y, z in pts),
-      "all parcels in the region box")
 counts = {}
 for x, y, z in pts:
     key = (min(int(x/0.25), 3), min(int(y/0.25), 3))
     counts[key] = counts.get(key, 0) + 1
-check(len(counts) == 16 and all(8 <= c <= 12 for c in counts.values()),
-      "16 cells with 8-12 parcels each: %s" % sorted(counts.values()))
-expected = 0.3*0.1/(156*math.pi/6*1e-6)
+check(all(0 <= x <= 1 and 0 <= y <= 1 and 0 <= z <= 0.1 for x, y, z in pts),
+      "all parcels in the region box")
+if mode == "lattice":
+    n = 156
+    check(len(counts) == 16 and all(8 <= c <= 12 for c in counts.values()),
+          "16 cells with 8-12 parcels each: %s" % sorted(counts.values()))
+else:
+    n = 160
+    check(len(counts) == 16 and all(c == 10 for c in counts.values()),
+          "arrangement cell: 10 parcels in each of the 16 cells: %s"
+          % sorted(counts.values()))
+    def near(v, h, origin):
+        k = round((v - origin)/h)
+        return abs(v - origin - k*h) <= 0.25*h + 1e-6
+    check(all(near(x, 0.125, 0.0625) and near(y, 0.05, 0.025) for x, y, z in pts),
+          "parcels within a quarter sub-spacing of the 2 x 5 x 1 sub-box centres")
+check(len(pts) == n, "%d parcels (%d)" % (n, len(pts)))
+expected = 0.3*0.1/(n*math.pi/6*1e-6)
 check(abs(nParticle/expected - 1) < 1e-12,
-      "nParticle %.15g = 0.3*0.1/(156*pi/6*1e-6) = %.15g" % (nParticle, expected))
+      "nParticle %.15g = 0.3*0.1/(%d*pi/6*1e-6) = %.15g" % (nParticle, n, expected))
 sys.exit(1 if fails else 0)
 PY
+}
+
+checkSeeding lattice || exit 1
 
 writeDict box 0.3 10 0.5 "(0 0 0) (1 1 0.1)" cell
 mppicSeedParcels -case "$case" > "$runDir/log.seedCell" 2>&1 || exit 1
-/usr/bin/python3 - "$case" <<'PY' || exit 1
-import math, re, sys
-case = sys.argv[1]
-text = open(case + "/constant/kinematicCloudPositions").read()
-pts = [tuple(map(float, t)) for t in
-       re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
-seeded = open(case + "/constant/seededParcels").read()
-nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
-fails = 0
-def check(ok, what):
-    global fails
-    print(("PASS " if ok else "FAIL ") + what)
-    fails += not ok
-counts = {}
-for x, y, z in pts:
-    key = (min(int(x/0.25), 3), min(int(y/0.25), 3))
-    counts[key] = counts.get(key, 0) + 1
-check(len(pts) == 160 and len(counts) == 16
-      and all(c == 10 for c in counts.values()),
-      "arrangement cell: 10 parcels in each of the 16 cells: %s"
-      % sorted(counts.values()))
-def near(v, h, origin):
-    k = round((v - origin)/h)
-    return abs(v - origin - k*h) <= 0.25*h + 1e-6
-check(all(near(x, 0.125, 0.0625) and near(y, 0.05, 0.025) and 0 <= z <= 0.1
-          for x, y, z in pts),
-      "parcels within a quarter sub-spacing of the 2 x 5 x 1 sub-box centres")
-expected = 0.3*0.1/(160*math.pi/6*1e-6)
-check(abs(nParticle/expected - 1) < 1e-12,
-      "nParticle %.15g = 0.3*0.1/(160*pi/6*1e-6) = %.15g" % (nParticle, expected))
-sys.exit(1 if fails else 0)
-PY
+checkSeeding cell || exit 1
 
 status=0
 for bad in "box 1.2 10 0.5:solidsFraction" "box 0.3 10 1:jitter" \
