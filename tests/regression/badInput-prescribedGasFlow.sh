@@ -17,4 +17,9 @@ check fatal "$runDir/case/log.broken" $rc \
 echo "$header type vortex; period 0;" > "$props"
 runBroken "$runDir/case" mppicPimpleFoam
 check fatal "$runDir/case/log.broken" $rc \
-    "period" "value 0" "(0, inf)" "prescribedGasFlowProperties"
+    "period" "value 0" "(0, inf)" "prescribedGasFlowProperties" || exit 1
+
+echo "$header type vortex; period 0.25; length -1;" > "$props"
+runBroken "$runDir/case" mppicPimpleFoam
+check fatal "$runDir/case/log.broken" $rc \
+    "length" "value -1" "(0, inf)" "prescribedGasFlowProperties"

@@ -39,7 +39,8 @@ setEntry "$case" constant/kinematicCloudProperties solidsSubCycling \
 (cd "$case" && mppicPimpleFoam > log.CFL 2>&1) || status=1
 check subCyclesCFL "$case" "$case/log.CFL" 0.05 0.005 || status=1
 
-for bad in "CFL 0;:CFL:(0, 1]" "maxSubCycles 0;:maxSubCycles:[1, inf)"
+for bad in "CFL 0;:CFL:(0, 1]" "maxSubCycles 0;:maxSubCycles:[1, inf)" \
+           "relaxationTimeFactor 0;:relaxationTimeFactor:(0, inf)"
 do
     entry="${bad%%:*}"
     rest="${bad#*:}"
