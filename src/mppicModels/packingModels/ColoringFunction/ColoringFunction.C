@@ -39,6 +39,10 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
         )
     ),
     capacityLimit_(this->coeffs().lookupOrDefault("capacityLimit", true)),
+    conserveMomentum_
+    (
+        this->coeffs().lookupOrDefault("conserveMomentum", false)
+    ),
     entries_()
 {}
 
@@ -53,6 +57,7 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     rules_(cm.rules_),
     impulse_(cm.impulse_),
     capacityLimit_(cm.capacityLimit_),
+    conserveMomentum_(cm.conserveMomentum_),
     entries_()
 {}
 
@@ -64,9 +69,13 @@ void Foam::PackingModels::ColoringFunction<CloudType>::impulseAndPackVelocity
 (
     const typename CloudType::parcelType& p,
     vector& impulse,
-    vector& uPack
+    vector& uPack,
+    label& packCell
 ) const
 {
+    // The pack is the parcel's own cell unless it lies ahead
+    packCell = p.cell();
+
     if (impulse_ == impulseType::gradient)
     {
         impulse = -this->packingGradAt(p);
@@ -103,6 +112,7 @@ void Foam::PackingModels::ColoringFunction<CloudType>::impulseAndPackVelocity
 
     impulse = -ahead.value*ahead.normal;
     uPack = ahead.found ? ahead.uMean : this->uMeanAt(p);
+    packCell = ahead.found ? ahead.cell : p.cell();
 }
 
 
@@ -121,6 +131,23 @@ Foam::PackingModels::ColoringFunction<CloudType>::cellPackingValues() const
         value = rules_.colour(value);
     }
     return tvalues;
+}
+
+
+template<class CloudType>
+void Foam::PackingModels::ColoringFunction<CloudType>::recordChange
+(
+    const typename CloudType::parcelType& p,
+    const vector& dU,
+    const label packCell
+) const
+{
+    this->recordVelocityChange(p, dU);
+
+    if (conserveMomentum_)
+    {
+        this->recordReaction(p, dU, packCell);
+    }
 }
 
 
@@ -170,7 +197,8 @@ velocityCorrection
 ) const
 {
     vector impulse, uPack;
-    impulseAndPackVelocity(p, impulse, uPack);
+    label packCell;
+    impulseAndPackVelocity(p, impulse, uPack, packCell);
 
     vector correction =
         rules_.correctedVelocity
@@ -200,13 +228,13 @@ velocityCorrection
             );
 
         const vector kept = entries_.keptVelocity(p, p.U() + correction);
-        this->recordVelocityChange(p, kept - p.U());
+        recordChange(p, kept - p.U(), packCell);
         p.U() = kept - move;
 
         return move;
     }
 
-    this->recordVelocityChange(p, correction);
+    recordChange(p, correction, packCell);
     return correction;
 }
 

@@ -1,0 +1,111 @@
+#!/usr/bin/python3
+"""Momentum budget of the packing step (tutorials/verification/packingMomentum).
+
+Reads the cloud's linear momentum and kinetic energy after every step from
+log.mppicPimpleFoam and the packing monitor's per-step packing momentum,
+writes packingMomentum.txt and prints it.
+
+Hand value: the layer alone moves at first, so the cloud's momentum is
+    P0 = m_layer*U0,  m_layer = 0.15*(0.04*0.01*0.005 m3)*2500 kg/m3
+       = 7.5e-4 kg,   U0 = (0.1, -0.5, 0) m/s  ->  P0 = (7.5e-5, -3.75e-4, 0).
+With no forces, only the packing model changes it: with conserveMomentum the
+pack takes the opposite impulse and P stays P0 to round-off while the
+collisions (e1 = 0.5) remove kinetic energy; without it, P changes by the
+monitor's packing momentum summed over the steps.
+
+    ./packingMomentumResults.py [--check]
+--check exits 1 when the run's form (conserveMomentum from the cloud
+properties) does not meet these statements.
+"""
+import re
+import sys
+
+P0 = (0.15*0.04*0.01*0.005*2500*0.1, -0.15*0.04*0.01*0.005*2500*0.5, 0.0)
+CLOSE_PACK = 0.6
+
+
+def vector(text):
+    return [float(v) for v in text.strip("()").split()]
+
+
+def read_log(path="log.mppicPimpleFoam"):
+    momentum, energy = [], []
+    for line in open(path):
+        m = re.match(r"\s+Linear momentum\s+= (\(.*\))", line)
+        if m:
+            momentum.append(vector(m.group(1)))
+        m = re.match(r"\s+Linear kinetic energy\s+= (\S+)", line)
+        if m:
+            energy.append(float(m.group(1)))
+    return momentum, energy
+
+
+def read_monitor(path="postProcessing/packingMonitor/0/packingMonitor.dat"):
+    rows = [l.split() for l in open(path) if l.strip() and l[0] != "#"]
+    packing = [[float(v) for v in r[8:11]] for r in rows]
+    return packing, max(float(r[4]) for r in rows)
+
+
+def conserve_setting(path="constant/kinematicCloudProperties"):
+    m = re.search(r"^\s*conserveMomentum\s+(\w+);", open(path).read(), re.M)
+    return m.group(1) in ("true", "on", "yes")
+
+
+def norm(v):
+    return sum(x*x for x in v)**0.5
+
+
+def main(argv):
+    conserve = conserve_setting()
+    momentum, energy = read_log()
+    packing, max_alpha = read_monitor()
+    scale = norm(P0)
+
+    # The first step injects; the packing of step k changes P(k-1) to P(k)
+    drift = max(norm([a - b for a, b in zip(p, momentum[0])])
+                for p in momentum)/scale
+    summed = [sum(r[i] for r in packing[1:]) for i in range(3)]
+    change = [a - b for a, b in zip(momentum[-1], momentum[0])]
+    mismatch = norm([a - b for a, b in zip(change, summed)])/scale
+    initial_error = norm([a - b for a, b in zip(momentum[0], P0)])/scale
+    energy_ratio = energy[-1]/energy[0]
+
+    lines = [
+        "conserveMomentum               %s" % ("true" if conserve else "false"),
+        "steps                          %d" % len(momentum),
+        "initial momentum [kg m/s]      (%.6e %.6e %.6e)" % tuple(momentum[0]),
+        "hand value P0                  (%.6e %.6e %.6e)" % P0,
+        "final momentum [kg m/s]        (%.6e %.6e %.6e)" % tuple(momentum[-1]),
+        "max |P - P(0)|/|P0|            %.3e" % drift,
+        "summed packing momentum        (%.6e %.6e %.6e)" % tuple(summed),
+        "|dP - summed|/|P0|             %.3e" % mismatch,
+        "final/initial kinetic energy   %.4f" % energy_ratio,
+        "max cell solids fraction       %.15g" % max_alpha,
+    ]
+    open("packingMomentum.txt", "w").write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+    if "--check" not in argv:
+        return 0
+
+    checks = [
+        (initial_error < 1e-12, "initial momentum equals m_layer*U0"),
+        (mismatch < 1e-10, "momentum change equals the monitor's sum"),
+        (max_alpha <= CLOSE_PACK*(1 + 1e-12), "cells stay at close pack"),
+    ]
+    if conserve:
+        checks += [
+            (drift < 1e-12, "momentum constant to round-off"),
+            (energy_ratio < 0.9, "collisions took kinetic energy"),
+        ]
+    else:
+        checks += [(drift > 0.5, "the reflections changed the momentum")]
+    failed = 0
+    for ok, what in checks:
+        print(("PASS " if ok else "FAIL ") + what)
+        failed += not ok
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
