@@ -43,7 +43,8 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     (
         this->coeffs().lookupOrDefault("conserveMomentum", false)
     ),
-    entries_()
+    entries_(),
+    reactions_()
 {}
 
 
@@ -58,7 +59,8 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     impulse_(cm.impulse_),
     capacityLimit_(cm.capacityLimit_),
     conserveMomentum_(cm.conserveMomentum_),
-    entries_()
+    entries_(),
+    reactions_()
 {}
 
 
@@ -144,9 +146,9 @@ void Foam::PackingModels::ColoringFunction<CloudType>::recordChange
 {
     this->recordVelocityChange(p, dU);
 
-    if (conserveMomentum_)
+    if (conserveMomentum_ && packCell >= 0 && magSqr(dU) > 0)
     {
-        this->recordReaction(p, dU, packCell);
+        reactions_.record(p, packCell, dU);
     }
 }
 
@@ -176,7 +178,17 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
             entries_.reportGrowth(this->owner(), rules_.closePackFraction());
         }
 
-        // End of the packing step: where each parcel now is
+        // End of the packing step: the packs take their impulses back
+        reactions_.apply
+        (
+            this->owner(),
+            [this](const typename CloudType::parcelType& p, const vector& dU)
+            {
+                this->recordVelocityChange(p, dU);
+            }
+        );
+
+        // Where each parcel now is
         entries_.clear();
         if (impulse_ == impulseType::neighbour)
         {

@@ -28,8 +28,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     cellUMean_(),
     coupledValues_(),
     coupledUMean_(),
-    cellAddedMomentum_(),
-    cellReaction_()
+    cellAddedMomentum_()
 {}
 
 
@@ -48,8 +47,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     cellUMean_(),
     coupledValues_(),
     coupledUMean_(),
-    cellAddedMomentum_(),
-    cellReaction_()
+    cellAddedMomentum_()
 {}
 
 
@@ -249,53 +247,6 @@ Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
 }
 
 
-template<class CloudType>
-void Foam::PackingModels::MfixPackingModel<CloudType>::recordReaction
-(
-    const typename CloudType::parcelType& p,
-    const vector& dU,
-    const label packCell
-) const
-{
-    if (packCell < 0)
-    {
-        return;
-    }
-
-    if (cellReaction_.empty())
-    {
-        cellReaction_.setSize(this->owner().mesh().nCells(), Zero);
-    }
-
-    const vector impulse = p.nParticle()*p.mass()*dU;
-    cellReaction_[packCell] -= impulse;
-    cellAddedMomentum_[packCell] -= impulse;
-}
-
-
-template<class CloudType>
-void Foam::PackingModels::MfixPackingModel<CloudType>::applyReactions()
-{
-    if (cellReaction_.empty())
-    {
-        return;
-    }
-
-    scalarField cellMass(cellReaction_.size(), Zero);
-    for (const typename CloudType::parcelType& p : this->owner())
-    {
-        cellMass[p.cell()] += p.nParticle()*p.mass();
-    }
-
-    for (typename CloudType::parcelType& p : this->owner())
-    {
-        p.U() += cellReaction_[p.cell()]/cellMass[p.cell()];
-    }
-
-    cellReaction_.clear();
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -308,7 +259,6 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheFields
 
     if (!store)
     {
-        applyReactions();
         volumeAverage_ = nullptr;
         uAverage_ = nullptr;
         packingField_.clear();
