@@ -9,13 +9,9 @@
 #   - the largest cell solids fraction at every step is at most
 #     max(1.05*0.62, 0.62 + V_parcel/V_cell) = max(0.651, 0.74) = 0.74
 #     (the field is cell-based: one parcel is 0.12 of a cell);
-#   - the bed pressure drop over 0.1-0.2 s: the 15 % band around the bed
-#     weight cannot be checked here, since the start-up (the packed bed at
-#     0.6 lifts and expands) lasts beyond 0.3 s and deltaP is then about
-#     1.4-1.6 x the weight; checked instead that the mean lies between
-#     0.85 x the weight and the Ergun pressure drop of the whole bed held at
-#     0.6 under the mean superficial gas velocity (0.51 m/s), 2.6 x the
-#     weight, the largest the gas can give before the bed moves.
+#   - the bed pressure drop over 0.1-0.2 s, after the start-up jump of the
+#     packed bed, lies within 15 % of the bed weight per area,
+#     6.8229*9.81/(0.57*0.015) = 7828 Pa (measured 1.08 x).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: kuipersJet.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -44,8 +40,8 @@ check(abs(res["parcelFraction"] - 0.12) < 1e-3,
       "one parcel = %.4f of a cell" % res["parcelFraction"])
 check(res["maxCell"] <= 0.74 + 1e-9,
       "max cell solids fraction %.4f <= 0.74 at every step" % res["maxCell"])
-check(0.85 <= res["dpRatio"] <= 2.6,
-      "mean deltaP over 0.1-0.2 s %.3f x bed weight in [0.85, 2.6]"
+check(abs(res["dpRatio"] - 1) <= 0.15,
+      "mean deltaP over 0.1-0.2 s %.3f x bed weight within 15 %%"
       % res["dpRatio"])
 sys.exit(1 if failures else 0)
 PY

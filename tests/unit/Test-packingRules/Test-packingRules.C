@@ -24,6 +24,10 @@ Description
           1b gives (0 -0.45 0), 1a then sets y = +0.25 -> (0 0.25 0);
           1a off -> (0 -0.45 0)
       no pack near, dV = 0: unchanged
+      a cell full to the nearest parcel below close pack (closePacked
+      false): only eq 20. Case 1a input gives the eq 20 value
+      (-0.1 0.35 0); Case 1b input (-0.5 0 0) is unchanged; Case 1b then
+      1a input (0 -0.5 0) is unchanged; approach as above (1.75 -0.15 0)
       reflection normal (only the component along dHat = dV/|dV|):
         approach as above: U' = U - 1.5*(Urel.x)x = (1.75 0.3 0)
         Case 1b: U = (-0.5 0.2 0), us = (-1 0 0), dV = (1 0 0):
@@ -208,6 +212,42 @@ void testColoringFunction()
             vector(0, -0.5, 0), vector(0, -1, 0), vector(0, 1, 0), g
         ),
         vector(0, -0.45, 0)
+    );
+    checkVector
+    (
+        "below close pack: Case 1a not applied",
+        rules.correctedVelocity
+        (
+            vector(0.2, -1, 0), vector(0, -0.1, 0), vector(0, 1, 0), g, false
+        ),
+        vector(-0.1, 0.35, 0)
+    );
+    checkVector
+    (
+        "below close pack: Case 1b not applied",
+        rules.correctedVelocity
+        (
+            vector(-0.5, 0, 0), vector(-1, 0, 0), vector(1, 0, 0), g, false
+        ),
+        vector(-0.5, 0, 0)
+    );
+    checkVector
+    (
+        "below close pack: neither Case 1b nor 1a along gravity",
+        rules.correctedVelocity
+        (
+            vector(0, -0.5, 0), vector(0, -1, 0), vector(0, 1, 0), g, false
+        ),
+        vector(0, -0.5, 0)
+    );
+    checkVector
+    (
+        "below close pack: approach, eq 20",
+        rules.correctedVelocity
+        (
+            vector(-2, 0.3, 0), vector(0.5, 0, 0), vector(1, 0, 0), g, false
+        ),
+        vector(1.75, -0.15, 0)
     );
     const coloringFunctionRules normal(colouringCoeffs(true, true, "normal"));
     checkVector

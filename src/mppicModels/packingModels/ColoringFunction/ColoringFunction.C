@@ -67,22 +67,20 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::PackingModels::ColoringFunction<CloudType>::impulseAndPackVelocity
+typename Foam::PackingModels::ColoringFunction<CloudType>::packState
+Foam::PackingModels::ColoringFunction<CloudType>::packFor
 (
-    const typename CloudType::parcelType& p,
-    vector& impulse,
-    vector& uPack,
-    label& packCell
+    const typename CloudType::parcelType& p
 ) const
 {
-    // The pack is the parcel's own cell unless it lies ahead
-    packCell = p.cell();
+    packState pack;
 
     if (impulse_ == impulseType::gradient)
     {
-        impulse = -this->packingGradAt(p);
-        uPack = this->uMeanAt(p);
-        return;
+        pack.impulse = -this->packingGradAt(p);
+        pack.uMean = this->uMeanAt(p);
+        pack.cell = p.cell();
+        return pack;
     }
 
     // A parcel that moved into its cell in this step and may not stay:
@@ -92,19 +90,20 @@ void Foam::PackingModels::ColoringFunction<CloudType>::impulseAndPackVelocity
 
     if (entered)
     {
-        const scalar packValue =
-            max(this->cellValue(p.cell()), rules_.closePackFraction());
+        const scalar cellValue = this->cellValue(p.cell());
 
         const bool blocked =
-            capacityLimit_
-          ? !entered->admitted
-          : this->cellValue(p.cell()) > 0;
+            capacityLimit_ ? !entered->admitted : cellValue > 0;
 
         if (blocked)
         {
-            impulse = -packValue*entered->direction;
-            uPack = this->cellUMean(p.cell());
-            return;
+            pack.impulse =
+                -max(cellValue, rules_.closePackFraction())
+                *entered->direction;
+            pack.uMean = this->cellUMean(p.cell());
+            pack.cell = p.cell();
+            pack.closePacked = cellValue > 0;
+            return pack;
         }
     }
 
@@ -112,9 +111,10 @@ void Foam::PackingModels::ColoringFunction<CloudType>::impulseAndPackVelocity
     const typename MfixPackingModel<CloudType>::neighbourState ahead =
         this->neighbourAhead(p);
 
-    impulse = -ahead.value*ahead.normal;
-    uPack = ahead.found ? ahead.uMean : this->uMeanAt(p);
-    packCell = ahead.found ? ahead.cell : p.cell();
+    pack.impulse = -ahead.value*ahead.normal;
+    pack.uMean = ahead.found ? ahead.uMean : this->uMeanAt(p);
+    pack.cell = ahead.found ? ahead.cell : p.cell();
+    return pack;
 }
 
 
@@ -208,17 +208,16 @@ velocityCorrection
     const scalar deltaT
 ) const
 {
-    vector impulse, uPack;
-    label packCell;
-    impulseAndPackVelocity(p, impulse, uPack, packCell);
+    const packState pack = packFor(p);
 
     vector correction =
         rules_.correctedVelocity
         (
             p.U(),
-            uPack,
-            impulse,
-            this->owner().g().value()
+            pack.uMean,
+            pack.impulse,
+            this->owner().g().value(),
+            pack.closePacked
         )
       - p.U();
 
@@ -239,14 +238,15 @@ velocityCorrection
                 deltaT
             );
 
-        const vector kept = entries_.keptVelocity(p, p.U() + correction);
-        recordChange(p, kept - p.U(), packCell);
+        const vector kept =
+            entries_.keptVelocity(p, p.U() + correction, pack.uMean);
+        recordChange(p, kept - p.U(), pack.cell);
         p.U() = kept - move;
 
         return move;
     }
 
-    recordChange(p, correction, packCell);
+    recordChange(p, correction, pack.cell);
     return correction;
 }
 

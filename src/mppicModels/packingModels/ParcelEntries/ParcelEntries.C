@@ -76,13 +76,10 @@ void Foam::ParcelEntries<CloudType>::update
     clear();
     scalarField startVolume(mesh.nCells(), Zero);
 
-    // Entrants of each cell, with how deep they went
-    struct entrant
-    {
-        const parcelType* parcel;
-        scalar depth;
-        scalar volume;
-    };
+    // Volume of the parcels that stayed in each cell
+    scalarField keptVolume(mesh.nCells(), Zero);
+
+    // Entrants of each cell
     List<DynamicList<entrant>> entrants(mesh.nCells());
 
     // Recorded parcels not seen here any more left for another processor
@@ -113,6 +110,7 @@ void Foam::ParcelEntries<CloudType>::update
             if (from == celli)
             {
                 startVolume[celli] += volume;
+                keptVolume[celli] += volume;
                 continue;
             }
             direction = mesh.cellCentres()[celli] - mesh.cellCentres()[from];
@@ -126,6 +124,7 @@ void Foam::ParcelEntries<CloudType>::update
             if (facei < 0)
             {
                 startVolume[celli] += volume;
+                keptVolume[celli] += volume;
                 continue;
             }
             direction = -n;
@@ -139,7 +138,7 @@ void Foam::ParcelEntries<CloudType>::update
         entry& e = entries_[&p];
         e.direction = direction;
         e.from = from;
-        entrants[celli].append({&p, depth, volume});
+        entrants[celli].append({&p, depth, volume, from});
 
         if (from >= 0)
         {
@@ -154,36 +153,75 @@ void Foam::ParcelEntries<CloudType>::update
 
     startFraction_ = startVolume/mesh.V();
 
-    // Each cell takes its deepest entrants up to close pack
+    admitUpToClosePack(mesh, closePackFraction, keptVolume, entrants);
+}
+
+
+template<class CloudType>
+void Foam::ParcelEntries<CloudType>::admitUpToClosePack
+(
+    const fvMesh& mesh,
+    const scalar closePackFraction,
+    scalarField& keptVolume,
+    List<DynamicList<entrant>>& entrants
+)
+{
+    // Start from every entrant admitted; a cell refuses those that do not
+    // fit, a refused parcel goes back to the cell it came from, which then
+    // has less room: revisit that cell. Admissions only ever turn into
+    // refusals, so this ends.
+    DynamicList<label> pending;
     forAll(entrants, celli)
     {
-        DynamicList<entrant>& list = entrants[celli];
-        if (list.empty())
+        if (entrants[celli].size())
         {
-            continue;
-        }
-
-        std::stable_sort
-        (
-            list.begin(),
-            list.end(),
-            [](const entrant& a, const entrant& b)
+            std::stable_sort
+            (
+                entrants[celli].begin(),
+                entrants[celli].end(),
+                [](const entrant& a, const entrant& b)
+                {
+                    return a.depth > b.depth;
+                }
+            );
+            for (const entrant& candidate : entrants[celli])
             {
-                return a.depth > b.depth;
+                entries_[candidate.parcel].admitted = true;
             }
-        );
+            pending.append(celli);
+        }
+    }
+
+    while (pending.size())
+    {
+        const label celli = pending.remove();
 
         // Room up to close pack, to the nearest parcel: a cell takes the
         // parcel count that comes closest to close pack
-        scalar room =
-            closePackFraction*mesh.V()[celli] - startVolume[celli];
+        scalar room = closePackFraction*mesh.V()[celli] - keptVolume[celli];
 
-        for (const entrant& candidate : list)
+        for (const entrant& candidate : entrants[celli])
         {
+            entry& e = entries_[candidate.parcel];
+            if (!e.admitted)
+            {
+                continue;
+            }
             if (candidate.volume <= room + 0.5*candidate.volume)
             {
                 room -= candidate.volume;
-                entries_[candidate.parcel].admitted = true;
+                continue;
+            }
+
+            e.admitted = false;
+            const label from = candidate.from;
+            if (from >= 0)
+            {
+                keptVolume[from] += candidate.volume;
+                if (entrants[from].size())
+                {
+                    pending.append(from);
+                }
             }
         }
     }
@@ -208,75 +246,18 @@ void Foam::ParcelEntries<CloudType>::recordCells(const CloudType& cloud)
 
 
 template<class CloudType>
-Foam::scalar Foam::ParcelEntries<CloudType>::exitDistance
-(
-    const fvMesh& mesh,
-    const label celli,
-    const point& start,
-    const vector& direction
-)
-{
-    scalar distance = GREAT;
-
-    for (const label facei : mesh.cells()[celli])
-    {
-        const vector n = cellFaceGeometry::outwardNormal(mesh, celli, facei);
-
-        const scalar along = direction & n;
-        if (along > SMALL)
-        {
-            distance =
-                min
-                (
-                    distance,
-                    max(((mesh.faceCentres()[facei] - start) & n)/along, 0)
-                );
-        }
-    }
-
-    return distance;
-}
-
-
-template<class CloudType>
-Foam::scalar Foam::ParcelEntries<CloudType>::entryDistance
-(
-    const fvMesh& mesh,
-    const label celli,
-    const point& start,
-    const vector& direction
-)
-{
-    scalar distance = 0;
-
-    for (const label facei : mesh.cells()[celli])
-    {
-        const vector n = cellFaceGeometry::outwardNormal(mesh, celli, facei);
-
-        const scalar along = direction & n;
-        if (along < -SMALL)
-        {
-            distance =
-                max(distance, ((mesh.faceCentres()[facei] - start) & n)/along);
-        }
-    }
-
-    return distance;
-}
-
-
-template<class CloudType>
 Foam::vector Foam::ParcelEntries<CloudType>::keptVelocity
 (
     const parcelType& p,
-    const vector& U
+    const vector& U,
+    const vector& uPack
 ) const
 {
     const entry* e = find(p);
 
     if (e && !e->admitted)
     {
-        const scalar inward = U & e->direction;
+        const scalar inward = (U - uPack) & e->direction;
         if (inward > 0)
         {
             return U - inward*e->direction;
@@ -306,8 +287,8 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
         vector back = mesh.cellCentres()[e->from] - x;
         back /= max(mag(back), VSMALL);
 
-        const scalar enter = entryDistance(mesh, e->from, x, back);
-        const scalar leave = exitDistance(mesh, e->from, x, back);
+        const scalar enter = cellFaceGeometry::entryDistance(mesh, e->from, x, back);
+        const scalar leave = cellFaceGeometry::exitDistance(mesh, e->from, x, back);
 
         const scalar backTravel =
             min
@@ -324,7 +305,7 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
         // Refused, from a cell on another processor: back out of this
         // cell the way it came in, a little into the cell beyond
         const vector back = -e->direction;
-        const scalar toFace = exitDistance(mesh, celli, x, back);
+        const scalar toFace = cellFaceGeometry::exitDistance(mesh, celli, x, back);
         const scalar cellSize = Foam::cbrt(mesh.V()[celli]);
 
         const scalar backTravel =
@@ -344,7 +325,7 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
         return dU;
     }
 
-    const scalar room = 0.99*exitDistance(mesh, celli, x, dU/mag(dU));
+    const scalar room = 0.99*cellFaceGeometry::exitDistance(mesh, celli, x, dU/mag(dU));
 
     return travel > room ? dU*room/travel : dU;
 }

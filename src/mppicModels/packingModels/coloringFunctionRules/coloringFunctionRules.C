@@ -62,7 +62,8 @@ Foam::vector Foam::coloringFunctionRules::correctedVelocity
     const vector& U,
     const vector& uMean,
     const vector& impulse,
-    const vector& g
+    const vector& g,
+    const bool closePacked
 ) const
 {
     const vector Urel = U - uMean;
@@ -82,7 +83,7 @@ Foam::vector Foam::coloringFunctionRules::correctedVelocity
         // Approaching the pack: reflect the relative velocity (eq 20)
         Unew = U - (1 + e1_)*changed(Urel);
     }
-    else if (case1b_ && (U & impulse) < 0)
+    else if (case1b_ && closePacked && (U & impulse) < 0)
     {
         // Case 1b (eq 23): moving into the pack, but slower than the pack
         Unew = U - (1 - e2_)*changed(U);
@@ -90,7 +91,7 @@ Foam::vector Foam::coloringFunctionRules::correctedVelocity
 
     // Case 1a (eq 22): moving along gravity onto a pack that lies along
     // gravity, the gravity component always bounces back
-    if (case1a_ && (impulse & g) < 0 && (U & g) > 0)
+    if (case1a_ && closePacked && (impulse & g) < 0 && (U & g) > 0)
     {
         const vector gHat = g/mag(g);
         Unew += (-e1_*(U & gHat) - (Unew & gHat))*gHat;
