@@ -16,10 +16,18 @@
 #     the parcels of a cell lie within +-0.25 sub-spacing of
 #     x = 0.0625 + 0.125 i, y = 0.025 + 0.05 j;
 #     nParticle = 0.3*0.1/(160*pi/6*1e-6) = 358.09862195...
+#   - statisticalWeight 1000 instead of parcelsPerCell (lattice): the
+#     lattice density is 0.3/(1000*pi/6*1e-6) per m3, 57.30 points on the
+#     1 x 1 x 0.1 box: nz = round(0.1/(0.1/57.30)^(1/3)) = round(0.83) = 1,
+#     ny = round(1/sqrt(1/57.30)) = round(7.57) = 8, nx = round(57.30/8) = 7:
+#     56 parcels, nParticle = 0.3*0.1/(56*pi/6*1e-6) = 1023.1786..., within
+#     the lattice's rounding (2.3 %) of the weight;
 #   - bad input: solidsFraction 1.2, jitter 1, parcelsPerCell 0, region
 #     sphere, an unknown cellZone, a box with min above max, arrangement
 #     spiral, and parcelsPerCell 2.5 with arrangement cell each stop with a
-#     FatalIOError naming the keyword.
+#     FatalIOError naming the keyword; so do statisticalWeight 0.5 (range
+#     [1, inf)), statisticalWeight with arrangement cell, and both or
+#     neither of parcelsPerCell and statisticalWeight.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: seedParcels.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -99,7 +107,61 @@ writeDict box 0.3 10 0.5 "(0 0 0) (1 1 0.1)" cell
 mppicSeedParcels -case "$case" > "$runDir/log.seedCell" 2>&1 || exit 1
 checkSeeding cell || exit 1
 
+# writeWeightDict <entries>: the lattice dictionary with the given count
+# entries (statisticalWeight and/or parcelsPerCell) and arrangement
+writeWeightDict()
+{
+    cat > "$case/system/mppicSeedParcelsDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object mppicSeedParcelsDict; }
+region          box;
+box             (0 0 0) (1 1 0.1);
+solidsFraction  0.3;
+$1
+diameter        0.01;
+jitter          0.5;
+seed            3;
+DICT
+}
+
 status=0
+writeWeightDict "statisticalWeight 1000;"
+mppicSeedParcels -case "$case" > "$runDir/log.seedWeight" 2>&1 || exit 1
+/usr/bin/python3 - "$case" <<'PY' || status=1
+import math, re, sys
+case = sys.argv[1]
+text = open(case + "/constant/kinematicCloudPositions").read()
+n = len(re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text))
+seeded = open(case + "/constant/seededParcels").read()
+nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
+expected = 0.3*0.1/(56*math.pi/6*1e-6)
+fails = 0
+def check(ok, what):
+    global fails
+    print(("PASS " if ok else "FAIL ") + what)
+    fails += not ok
+check(n == 56, "statisticalWeight 1000: 56 parcels (%d)" % n)
+check(abs(nParticle/expected - 1) < 1e-12,
+      "nParticle %.15g = 0.3*0.1/(56*pi/6*1e-6) = %.15g" % (nParticle, expected))
+check(abs(nParticle/1000 - 1) < 0.025,
+      "nParticle within 2.5 % of the statistical weight 1000")
+sys.exit(1 if fails else 0)
+PY
+for bad in "statisticalWeight 0.5;:statisticalWeight:[1, inf)" \
+           "statisticalWeight 1000; arrangement cell;:statisticalWeight:arrangement lattice" \
+           "statisticalWeight 1000; parcelsPerCell 10;:parcelsPerCell and statisticalWeight:both" \
+           "jitter 0.5;:parcelsPerCell and statisticalWeight:neither"
+do
+    entries="${bad%%:*}"
+    rest="${bad#*:}"
+    keyword="${rest%%:*}"
+    what="${rest#*:}"
+    writeWeightDict "$entries"
+    log="$runDir/log.bad.weight.$(echo "$entries" | tr -cd 'a-zA-Z0-9')"
+    mppicSeedParcels -case "$case" > "$log" 2>&1
+    rc=$?
+    check fatal "$log" $rc "$keyword" "$what" || status=1
+done
+
 for bad in "box 1.2 10 0.5:solidsFraction" "box 0.3 10 1:jitter" \
            "box 0.3 0 0.5:parcelsPerCell" "sphere 0.3 10 0.5:region" \
            "cellZone 0.3 10 0.5:cellZone"

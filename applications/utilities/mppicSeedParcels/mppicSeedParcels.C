@@ -31,6 +31,14 @@ Description
         nParticle = alpha_s*V_region/(nParcels*pi*d^3/6)
     particles, so that the seeded solids volume is alpha_s*V_region exactly.
 
+    Instead of parcelsPerCell, statisticalWeight W (particles per parcel,
+    MFiX's PIC_CONST_STATWT) sets the lattice density to alpha_s/(W*pi*d^3/6)
+    parcels per unit volume, i.e. parcelsPerCell = alpha_s*V_region/
+    (W*pi*d^3/6*nCells) per mean cell; nParticle is then the value above,
+    within the lattice's rounding of W (both are written). Use it on meshes
+    whose cells differ in size (tetrahedra), where a parcel count per cell
+    has no fixed meaning; it needs arrangement lattice.
+
 Usage
     mppicSeedParcels [-dict <file>]
 
@@ -40,7 +48,8 @@ Usage
     box             (0 0 0) (0.05 0.1 0.005);   // region box only
     cellZone        bed;            // region cellZone only
     solidsFraction  0.3;
-    parcelsPerCell  10;
+    parcelsPerCell  10;             // or statisticalWeight, not both
+    statisticalWeight 4;            // particles per parcel (lattice only)
     diameter        2e-4;           // particle diameter [m]
     arrangement     cell;           // cell or lattice
     jitter          0.5;
@@ -54,18 +63,22 @@ Usage
         box            | min and max corners [m]               | (region box) | min < max
         cellZone       | name of the cellZone                  | (region cellZone) |
         solidsFraction | target solids fraction                | (required) | (0, 1)
-        parcelsPerCell | parcels per cell                      | (required) | [1, inf), an integer with cell
+        parcelsPerCell | parcels per cell                      | (this or statisticalWeight) | [1, inf), an integer with cell
+        statisticalWeight | particles per parcel (lattice only) | (this or parcelsPerCell) | [1, inf)
         diameter       | particle diameter [m]                 | (required) | (0, inf)
         arrangement    | cell (N per cell) or lattice           | lattice | cell, lattice
         jitter         | random offset, fraction of the spacing | 0.5    | [0, 1)
         seed           | random seed                           | 1       | integer
         positionsFile  | output file in constant/              | kinematicCloudPositions |
     \endtable
+    Exactly one of parcelsPerCell and statisticalWeight; statisticalWeight
+    with arrangement cell stops with a FatalIOError.
     MFiX equivalents: PIC_CONST_STATWT / PIC_CONST_NPC (constant
     statistical weight or parcels per cell) of the initial condition.
 
     Writes constant/<positionsFile> and constant/seededParcels with
-    nParticle, nParcels and solidsVolume; a cloud dictionary uses it as
+    nParticle, nParcels, solidsVolume, regionVolume, nCells and
+    parcelsPerCell (the mean per cell); a cloud dictionary uses it as
         #include "seededParcels"
         ... nParticle $nParticle;
 
@@ -159,7 +172,6 @@ int main(int argc, char *argv[])
 
     using namespace mppicCoefficients;
     const scalar alpha = read(dict, "solidsFraction", bounds::open(0, 1));
-    const scalar perCell = read(dict, "parcelsPerCell", bounds::atLeast(1));
     const scalar diameter = read(dict, "diameter", bounds::above(0));
     const scalar jitter = read(dict, "jitter", 0.5, bounds::closedOpen(0, 1));
     const label seed = dict.lookupOrDefault<label>("seed", 1);
@@ -188,8 +200,43 @@ int main(int argc, char *argv[])
             << exit(FatalIOError);
     }
 
-    Random rndGen(seed);
+    const scalar particleVolume = constant::mathematical::pi/6*pow3(diameter);
     const word arrangement(dict.lookupOrDefault<word>("arrangement", "lattice"));
+
+    // Parcels per mean cell: given, or from the statistical weight
+    const bool byCount = dict.found("parcelsPerCell");
+    const bool byWeight = dict.found("statisticalWeight");
+    if (byCount == byWeight)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": give exactly one of the "
+            << "keywords parcelsPerCell and statisticalWeight ("
+            << (byCount ? "both" : "neither") << " given)"
+            << exit(FatalIOError);
+    }
+    scalar perCell = 0;
+    if (byCount)
+    {
+        perCell = read(dict, "parcelsPerCell", bounds::atLeast(1));
+    }
+    else
+    {
+        const scalar weight =
+            read(dict, "statisticalWeight", bounds::atLeast(1));
+        if (arrangement == "cell")
+        {
+            FatalIOErrorInFunction(dict)
+                << "Dictionary " << dict.name() << ", keyword "
+                << "statisticalWeight: value " << weight << " needs "
+                << "arrangement lattice (arrangement cell takes an integer "
+                << "parcelsPerCell)" << exit(FatalIOError);
+        }
+        perCell = alpha*regionVolume/(weight*particleVolume*nRegionCells);
+        Info<< "Statistical weight " << weight << ": " << perCell
+            << " parcels per mean cell" << nl;
+    }
+
+    Random rndGen(seed);
 
     DynamicList<point> positions;
     if (arrangement == "lattice")
@@ -216,7 +263,15 @@ int main(int argc, char *argv[])
             << exit(FatalIOError);
     }
 
-    const scalar particleVolume = constant::mathematical::pi/6*pow3(diameter);
+    if (positions.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": no lattice point fell in "
+            << "the region (" << perCell << " parcels per mean cell); "
+            << "raise parcelsPerCell or lower statisticalWeight"
+            << exit(FatalIOError);
+    }
+
     const scalar solidsVolume = alpha*regionVolume;
     const scalar nParticle = solidsVolume/(positions.size()*particleVolume);
 
@@ -254,6 +309,8 @@ int main(int argc, char *argv[])
     seeded.add("nParcels", positionsIO.size());
     seeded.add("solidsVolume", solidsVolume);
     seeded.add("regionVolume", regionVolume);
+    seeded.add("nCells", nRegionCells);
+    seeded.add("parcelsPerCell", scalar(positionsIO.size())/nRegionCells);
     seeded.regIOobject::write();
 
     Info<< "Seeded " << positionsIO.size() << " parcels in " << nRegionCells
