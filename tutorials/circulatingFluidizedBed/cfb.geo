@@ -97,17 +97,42 @@ leg = newv; Cylinder(leg) = {bendX, legY, axisZ, riserX - bendX, 0, 0, legD/2};
 fluid() = BooleanUnion{ Volume{riser}; Delete; }
     { Volume{cyclone(), cone, exitTube, cross, standpipe, bend, leg}; Delete; };
 
-// Aeration ports: a short cylinder of diameter portD across the wall,
-// portDepth to either side of it along the wall normal; its part inside
-// the fluid is split off the fluid (BooleanFragments), so that the pipe
-// wall inside the cylinder becomes a face of its own: the port patch. The
-// inner piece stays part of the fluid; the part outside is never made.
-portDepth = 0.5*standD/2;
+// Aeration ports: flush circular patches imprinted on the pipe wall. A
+// short cylinder of diameter portD across the wall cuts the port patch out
+// of the wall face (BooleanIntersection of the face with the cylinder);
+// BooleanFragments then imprints the patch on the fluid's boundary, which
+// splits the wall face into the port and the rest. No volume is added or
+// split, so no small cells are made at the port.
+portDepth = standD/4;
 eps       = 1e-6;
+
+// The wall face through a point: the one boundary surface of the fluid
+// whose bounding box holds the point (to 0.1 mm)
+Macro WallFaceAt
+    faces() = Abs(Boundary{ Volume{fluid()}; });
+    found = -1;
+    nFound = 0;
+    tol = 1e-4;
+    For k In {0:#faces()-1}
+        bb() = BoundingBox Surface{faces(k)};
+        If (bb(0) <= at(0) + tol && bb(3) >= at(0) - tol && bb(1) <= at(1) + tol && bb(4) >= at(1) - tol &&
+            bb(2) <= at(2) + tol && bb(5) >= at(2) - tol)
+            found = faces(k);
+            nFound += 1;
+        EndIf
+    EndFor
+    If (nFound != 1)
+        found = -1;
+    EndIf
+Return
 
 // standpipe port: outward normal -x
 pS[] = {cycX - standD/2, portStandY, axisZ};
 portS = newv; Cylinder(portS) = {pS[0] - portDepth, pS[1], pS[2], 2*portDepth, 0, 0, portD/2};
+at() = pS[];
+Call WallFaceAt;
+wallS = found;
+patchS() = BooleanIntersection{ Surface{wallS}; }{ Volume{portS}; Delete; };
 
 // bend port: on the outer wall at angle a from the standpipe end; the
 // outward normal there is (-cos a, -sin a, 0)
@@ -116,9 +141,18 @@ nB[] = {-Cos(a), -Sin(a), 0};
 pB[] = {bendX + (bendR + standD/2)*nB[0], standY0 + (bendR + standD/2)*nB[1], axisZ};
 portB = newv; Cylinder(portB) = {pB[0] + portDepth*nB[0], pB[1] + portDepth*nB[1], pB[2],
                                  -2*portDepth*nB[0], -2*portDepth*nB[1], 0, portD/2};
+at() = pB[];
+Call WallFaceAt;
+wallB = found;
+patchB() = BooleanIntersection{ Surface{wallB}; }{ Volume{portB}; Delete; };
 
-portIn() = BooleanIntersection{ Volume{portS, portB}; Delete; }{ Volume{fluid()}; };
-pieces() = BooleanFragments{ Volume{fluid()}; Delete; }{ Volume{portIn()}; Delete; };
+If (wallS < 0 || wallB < 0 || #patchS() != 1 || #patchB() != 1)
+    Error("cfb.geo: aeration port faces not found (wall faces %g %g, patches %g %g)",
+          wallS, wallB, #patchS(), #patchB());
+EndIf
+
+BooleanFragments{ Volume{fluid()}; Delete; }{ Surface{patchS(), patchB()}; Delete; }
+pieces() = Volume{:};
 
 // =============================================================================
 // Patches: the outer boundary of the fluid, sorted by bounding boxes
