@@ -22,6 +22,9 @@
 #     ny = round(1/sqrt(1/57.30)) = round(7.57) = 8, nx = round(57.30/8) = 7:
 #     56 parcels, nParticle = 0.3*0.1/(56*pi/6*1e-6) = 1023.1786..., within
 #     the lattice's rounding (2.3 %) of the weight;
+#   - arrangement volume (round(N V_cell/V_mean) random points per cell):
+#     10 per cell on the box; on the box graded 3:1 in x 5, 8, 11, 16 per
+#     cell by column; statisticalWeight 490: 7 per cell (see below);
 #   - bad input: solidsFraction 1.2, jitter 1, parcelsPerCell 0, region
 #     sphere, an unknown cellZone, a box with min above max, arrangement
 #     spiral, and parcelsPerCell 2.5 with arrangement cell each stop with a
@@ -161,6 +164,70 @@ do
     rc=$?
     check fatal "$log" $rc "$keyword" "$what" || status=1
 done
+
+# arrangement volume: on the uniform box, 10 parcels in each of the 16
+# cells; on the box graded 3:1 in x (blockMesh simpleGrading (3 1 1): cell
+# widths 0.13294, 0.19172, 0.27652, 0.39882 m, mean 0.25 m), round(10 w/0.25)
+# = 5, 8, 11, 16 parcels in the cells of each column (160 in all);
+# statisticalWeight 490 on the uniform box: 0.3*0.1/(490*pi/6*1e-6*16) =
+# 7.31 per cell, so 7 in each cell, 112 parcels, nParticle =
+# 0.3*0.1/(112*pi/6*1e-6) = 511.5870...
+checkVolume()   # <label> <column edges> <expected counts per column> <n>
+{
+    /usr/bin/python3 - "$case" "$@" <<'PY'
+import bisect, math, re, sys
+case, label, edges, counts, n = sys.argv[1:6]
+edges = [float(e) for e in edges.split()]
+counts = [int(c) for c in counts.split()]
+n = int(n)
+text = open(case + "/constant/kinematicCloudPositions").read()
+pts = [tuple(map(float, t)) for t in
+       re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
+seeded = open(case + "/constant/seededParcels").read()
+nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
+fails = 0
+def check(ok, what):
+    global fails
+    print(("PASS " if ok else "FAIL ") + what)
+    fails += not ok
+cells = {}
+for x, y, z in pts:
+    key = (bisect.bisect_right(edges, x) - 1, int(y/0.25))
+    cells[key] = cells.get(key, 0) + 1
+check(len(pts) == n, "%s: %d parcels (%d)" % (label, n, len(pts)))
+check(all(0 <= x <= 1 and 0 <= y <= 1 and 0 <= z <= 0.1 for x, y, z in pts),
+      "%s: all parcels in the region" % label)
+check(sorted(cells) == [(i, j) for i in range(4) for j in range(4)]
+      and all(cells[(i, j)] == counts[i] for i, j in cells),
+      "%s: parcels per cell by column %s: %s" % (label, counts,
+      [[cells.get((i, j), 0) for j in range(4)] for i in range(4)]))
+expected = 0.3*0.1/(n*math.pi/6*1e-6)
+check(abs(nParticle/expected - 1) < 1e-12,
+      "%s: nParticle %.15g = 0.3*0.1/(%d*pi/6*1e-6) = %.15g"
+      % (label, nParticle, n, expected))
+sys.exit(1 if fails else 0)
+PY
+}
+writeDict box 0.3 10 0.5 "(0 0 0) (1 1 0.1)" volume
+mppicSeedParcels -case "$case" > "$runDir/log.seedVolume" 2>&1 || exit 1
+checkVolume "volume, uniform" "0 0.25 0.5 0.75 1" "10 10 10 10" 160 || status=1
+writeWeightDict "statisticalWeight 490; arrangement volume;"
+mppicSeedParcels -case "$case" > "$runDir/log.seedVolumeWeight" 2>&1 || exit 1
+checkVolume "volume, statisticalWeight 490" "0 0.25 0.5 0.75 1" "7 7 7 7" 112 \
+    || status=1
+graded="$runDir/graded"
+rm -rf "$graded"
+cp -r "$case" "$graded"
+sed -i 's/simpleGrading (1 1 1)/simpleGrading (3 1 1)/' \
+    "$graded/system/blockMeshDict"
+blockMesh -case "$graded" > "$runDir/log.blockMesh.graded" 2>&1 || exit 1
+writeDict box 0.3 10 0.5 "(0 0 0) (1 1 0.1)" volume
+cp "$case/system/mppicSeedParcelsDict" "$graded/system/"
+mppicSeedParcels -case "$graded" > "$runDir/log.seedVolumeGraded" 2>&1 || exit 1
+(
+    case="$graded"
+    checkVolume "volume, graded 3:1" "0 0.13294 0.32466 0.60118 1" "5 8 11 16" 160
+) || status=1
 
 for bad in "box 1.2 10 0.5:solidsFraction" "box 0.3 10 1:jitter" \
            "box 0.3 0 0.5:parcelsPerCell" "sphere 0.3 10 0.5:region" \
