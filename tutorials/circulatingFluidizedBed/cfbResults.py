@@ -27,7 +27,8 @@ Reads the case's postProcessing tables and logs and prints, over the window
     the injected mass, and the largest cell solids fraction of the window;
   - wall time per simulated second (the solver log's ClockTime).
 --mesh prints the mesh figures (checkMesh, cell volumes, a parcel's share of
-a cell). --plot draws cfb_history.png. The same numbers come from summary()
+a cell). --plot draws cfb_history.png, --geometry cfb_geometry.png (the
+patches, pressure taps, collector planes and the initial inventory box). The same numbers come from summary()
 for the regression test.
 """
 import argparse
@@ -389,6 +390,53 @@ def plot(r, path):
     fig.savefig(path, dpi=90)
 
 
+def plot_geometry(case, path):
+    """Boundary face centres by patch (x-y and z-y views), with the pressure
+    taps, the collector planes and the inventory box."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    def body(f):
+        t = open(f).read()
+        t = t[t.index("}", t.index("FoamFile")) + 1:]
+        return re.sub(r"//.*", "", t)
+    mesh = os.path.join(case, "constant", "polyMesh")
+    P = [tuple(map(float, t)) for t in re.findall(
+        r"\(([-\d.eE+]+) ([-\d.eE+]+) ([-\d.eE+]+)\)", body(os.path.join(mesh, "points")))]
+    F = [list(map(int, f.split())) for f in
+         re.findall(r"\d+\(([\d ]+)\)", body(os.path.join(mesh, "faces")))]
+    patches = re.findall(r"(\w+)\s*\{[^}]*nFaces\s+(\d+);\s*startFace\s+(\d+);",
+                         body(os.path.join(mesh, "boundary")))
+    colours = {"walls": "0.75", "riserInlet": "tab:blue", "outlet": "tab:red",
+               "aerationStandpipe": "tab:green", "aerationBend": "tab:purple"}
+    fig, ax = plt.subplots(1, 2, figsize=(7.5, 12), gridspec_kw={"width_ratios": [2.13, 1]})
+    for name, nf, sf in patches:
+        nf, sf = int(nf), int(sf)
+        cs = [tuple(sum(P[i][k] for i in F[f])/len(F[f]) for k in range(3))
+              for f in range(sf, sf + nf)]
+        size = 0.3 if name == "walls" else 10
+        ax[0].scatter([c[0] for c in cs], [c[1] for c in cs], s=size,
+                      c=colours.get(name, "k"), label=name)
+        ax[1].scatter([c[2] for c in cs], [c[1] for c in cs], s=size,
+                      c=colours.get(name, "k"))
+    taps = [(0.282, 0.05), (0.282, 1.19), (0.0727, 0.16), (0.0727, 0.90)]
+    ax[0].plot([t[0] for t in taps], [t[1] for t in taps], "k^", ms=6,
+               label="pressure taps (dP)")
+    ax[0].plot([0.0527, 0.0927], [0.20, 0.20], "r-", lw=2, label="standpipe collector")
+    ax[0].plot([0.1783, 0.1874], [1.218, 1.218], "m-", lw=2, label="crossover collector")
+    ax[0].add_patch(matplotlib.patches.Rectangle((0.045, 0), 0.2, 0.932, fill=False,
+                                                 ls="--", lw=0.8, label="initial inventory box"))
+    for a in ax:
+        a.set_aspect("equal")
+    ax[0].set_xlabel("x [m]")
+    ax[0].set_ylabel("y [m]")
+    ax[1].set_xlabel("z [m]")
+    ax[0].legend(loc="center", bbox_to_anchor=(0.55, 0.55), fontsize=7, markerscale=2)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+
+
 def main(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("case", nargs="?", default=".")
@@ -396,7 +444,13 @@ def main(argv):
     p.add_argument("--to", dest="t1", type=float)
     p.add_argument("--plot", action="store_true")
     p.add_argument("--mesh", action="store_true")
+    p.add_argument("--geometry", action="store_true",
+                   help="draw cfb_geometry.png (patches, taps, planes) and stop")
     a = p.parse_args(argv)
+    if a.geometry:
+        plot_geometry(a.case, os.path.join(a.case, "cfb_geometry.png"))
+        print("wrote cfb_geometry.png")
+        return
     if a.mesh:
         print_mesh(mesh_figures(a.case))
     r = summary(a.case, a.t0, a.t1)
