@@ -16,10 +16,21 @@
 #     the parcels of a cell lie within +-0.25 sub-spacing of
 #     x = 0.0625 + 0.125 i, y = 0.025 + 0.05 j;
 #     nParticle = 0.3*0.1/(160*pi/6*1e-6) = 358.09862195...
+#   - statisticalWeight 1000 instead of parcelsPerCell (lattice): the
+#     lattice density is 0.3/(1000*pi/6*1e-6) per m3, 57.30 points on the
+#     1 x 1 x 0.1 box: nz = round(0.1/(0.1/57.30)^(1/3)) = round(0.83) = 1,
+#     ny = round(1/sqrt(1/57.30)) = round(7.57) = 8, nx = round(57.30/8) = 7:
+#     56 parcels, nParticle = 0.3*0.1/(56*pi/6*1e-6) = 1023.1786..., within
+#     the lattice's rounding (2.3 %) of the weight;
+#   - arrangement volume (round(N V_cell/V_mean) random points per cell):
+#     10 per cell on the box; on the box graded 3:1 in x 5, 8, 11, 16 per
+#     cell by column; statisticalWeight 490: 7 per cell (see below);
 #   - bad input: solidsFraction 1.2, jitter 1, parcelsPerCell 0, region
 #     sphere, an unknown cellZone, a box with min above max, arrangement
 #     spiral, and parcelsPerCell 2.5 with arrangement cell each stop with a
-#     FatalIOError naming the keyword.
+#     FatalIOError naming the keyword; so do statisticalWeight 0.5 (range
+#     [1, inf)), statisticalWeight with arrangement cell, and both or
+#     neither of parcelsPerCell and statisticalWeight.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: seedParcels.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -99,7 +110,125 @@ writeDict box 0.3 10 0.5 "(0 0 0) (1 1 0.1)" cell
 mppicSeedParcels -case "$case" > "$runDir/log.seedCell" 2>&1 || exit 1
 checkSeeding cell || exit 1
 
+# writeWeightDict <entries>: the lattice dictionary with the given count
+# entries (statisticalWeight and/or parcelsPerCell) and arrangement
+writeWeightDict()
+{
+    cat > "$case/system/mppicSeedParcelsDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object mppicSeedParcelsDict; }
+region          box;
+box             (0 0 0) (1 1 0.1);
+solidsFraction  0.3;
+$1
+diameter        0.01;
+jitter          0.5;
+seed            3;
+DICT
+}
+
 status=0
+writeWeightDict "statisticalWeight 1000;"
+mppicSeedParcels -case "$case" > "$runDir/log.seedWeight" 2>&1 || exit 1
+/usr/bin/python3 - "$case" <<'PY' || status=1
+import math, re, sys
+case = sys.argv[1]
+text = open(case + "/constant/kinematicCloudPositions").read()
+n = len(re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text))
+seeded = open(case + "/constant/seededParcels").read()
+nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
+expected = 0.3*0.1/(56*math.pi/6*1e-6)
+fails = 0
+def check(ok, what):
+    global fails
+    print(("PASS " if ok else "FAIL ") + what)
+    fails += not ok
+check(n == 56, "statisticalWeight 1000: 56 parcels (%d)" % n)
+check(abs(nParticle/expected - 1) < 1e-12,
+      "nParticle %.15g = 0.3*0.1/(56*pi/6*1e-6) = %.15g" % (nParticle, expected))
+check(abs(nParticle/1000 - 1) < 0.025,
+      "nParticle within 2.5 % of the statistical weight 1000")
+sys.exit(1 if fails else 0)
+PY
+for bad in "statisticalWeight 0.5;:statisticalWeight:[1, inf)" \
+           "statisticalWeight 1000; arrangement cell;:statisticalWeight:arrangement lattice" \
+           "statisticalWeight 1000; parcelsPerCell 10;:parcelsPerCell and statisticalWeight:both" \
+           "jitter 0.5;:parcelsPerCell and statisticalWeight:neither"
+do
+    entries="${bad%%:*}"
+    rest="${bad#*:}"
+    keyword="${rest%%:*}"
+    what="${rest#*:}"
+    writeWeightDict "$entries"
+    log="$runDir/log.bad.weight.$(echo "$entries" | tr -cd 'a-zA-Z0-9')"
+    mppicSeedParcels -case "$case" > "$log" 2>&1
+    rc=$?
+    check fatal "$log" $rc "$keyword" "$what" || status=1
+done
+
+# arrangement volume: on the uniform box, 10 parcels in each of the 16
+# cells; on the box graded 3:1 in x (blockMesh simpleGrading (3 1 1): cell
+# widths 0.13294, 0.19172, 0.27652, 0.39882 m, mean 0.25 m), round(10 w/0.25)
+# = 5, 8, 11, 16 parcels in the cells of each column (160 in all);
+# statisticalWeight 490 on the uniform box: 0.3*0.1/(490*pi/6*1e-6*16) =
+# 7.31 per cell, so 7 in each cell, 112 parcels, nParticle =
+# 0.3*0.1/(112*pi/6*1e-6) = 511.5870...
+checkVolume()   # <label> <column edges> <expected counts per column> <n>
+{
+    /usr/bin/python3 - "$case" "$@" <<'PY'
+import bisect, math, re, sys
+case, label, edges, counts, n = sys.argv[1:6]
+edges = [float(e) for e in edges.split()]
+counts = [int(c) for c in counts.split()]
+n = int(n)
+text = open(case + "/constant/kinematicCloudPositions").read()
+pts = [tuple(map(float, t)) for t in
+       re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
+seeded = open(case + "/constant/seededParcels").read()
+nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
+fails = 0
+def check(ok, what):
+    global fails
+    print(("PASS " if ok else "FAIL ") + what)
+    fails += not ok
+cells = {}
+for x, y, z in pts:
+    key = (bisect.bisect_right(edges, x) - 1, int(y/0.25))
+    cells[key] = cells.get(key, 0) + 1
+check(len(pts) == n, "%s: %d parcels (%d)" % (label, n, len(pts)))
+check(all(0 <= x <= 1 and 0 <= y <= 1 and 0 <= z <= 0.1 for x, y, z in pts),
+      "%s: all parcels in the region" % label)
+check(sorted(cells) == [(i, j) for i in range(4) for j in range(4)]
+      and all(cells[(i, j)] == counts[i] for i, j in cells),
+      "%s: parcels per cell by column %s: %s" % (label, counts,
+      [[cells.get((i, j), 0) for j in range(4)] for i in range(4)]))
+expected = 0.3*0.1/(n*math.pi/6*1e-6)
+check(abs(nParticle/expected - 1) < 1e-12,
+      "%s: nParticle %.15g = 0.3*0.1/(%d*pi/6*1e-6) = %.15g"
+      % (label, nParticle, n, expected))
+sys.exit(1 if fails else 0)
+PY
+}
+writeDict box 0.3 10 0.5 "(0 0 0) (1 1 0.1)" volume
+mppicSeedParcels -case "$case" > "$runDir/log.seedVolume" 2>&1 || exit 1
+checkVolume "volume, uniform" "0 0.25 0.5 0.75 1" "10 10 10 10" 160 || status=1
+writeWeightDict "statisticalWeight 490; arrangement volume;"
+mppicSeedParcels -case "$case" > "$runDir/log.seedVolumeWeight" 2>&1 || exit 1
+checkVolume "volume, statisticalWeight 490" "0 0.25 0.5 0.75 1" "7 7 7 7" 112 \
+    || status=1
+graded="$runDir/graded"
+rm -rf "$graded"
+cp -r "$case" "$graded"
+sed -i 's/simpleGrading (1 1 1)/simpleGrading (3 1 1)/' \
+    "$graded/system/blockMeshDict"
+blockMesh -case "$graded" > "$runDir/log.blockMesh.graded" 2>&1 || exit 1
+writeDict box 0.3 10 0.5 "(0 0 0) (1 1 0.1)" volume
+cp "$case/system/mppicSeedParcelsDict" "$graded/system/"
+mppicSeedParcels -case "$graded" > "$runDir/log.seedVolumeGraded" 2>&1 || exit 1
+(
+    case="$graded"
+    checkVolume "volume, graded 3:1" "0 0.13294 0.32466 0.60118 1" "5 8 11 16" 160
+) || status=1
+
 for bad in "box 1.2 10 0.5:solidsFraction" "box 0.3 10 1:jitter" \
            "box 0.3 0 0.5:parcelsPerCell" "sphere 0.3 10 0.5:region" \
            "cellZone 0.3 10 0.5:cellZone"

@@ -40,6 +40,13 @@ Description
     system/controlDict turns it off). Writes U.<gas>,
     p (kinematic), alpha.<gas> and alpha.<cloud> (solids fraction).
 
+    Cell velocities are reconstructed from face fluxes with libmppicModels'
+    reconstructFlux, which gives fvc::reconstruct's result without its
+    aliasing (OpenFOAM v1912 built with GCC 12 gets fvc::reconstruct wrong
+    on non-orthogonal cells: tetrahedra, sheared hexahedra; see
+    reconstructFlux.H). On orthogonal hexahedra the two are the same, and so
+    are the answers of this solver and stock MPPICFoam.
+
     The gas fraction is one minus the solids fraction deposited per cell
     (solidsFractionFrom cell, the default, as MPPICFoam) or by the cloud's
     averagingMethod (solidsFractionFrom averaging, as MFiX-PIC deposits
@@ -69,6 +76,7 @@ Usage
 #include "SolidsSubCycle.H"
 #include "solidsFractionDeposition.H"
 #include "prescribedGasFlow.H"
+#include "reconstructFlux.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

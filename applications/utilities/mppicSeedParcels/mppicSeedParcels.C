@@ -9,13 +9,14 @@ Group
 
 Description
     Fills a box or a cellZone with parcels at a target solids fraction, a
-    given number of parcels per cell, on a jittered lattice, and writes the
+    given number of parcels per cell or particles per parcel, on a jittered
+    lattice or per cell, and writes the
     positions file of manualInjection together with the number of particles
     per parcel. Beds then start at the intended packing instead of the
     Poisson over-packing of random seeding (at 5 parcels per cell, random
     seeding puts some cells at twice the mean).
 
-    Two arrangements (parcelArrangements.H):
+    Three arrangements (parcelArrangements.H):
     - cell: exactly N parcels in every cell of the region, at the centres
       of the N sub-boxes of the cell's bounding box that are closest to
       cubes (for N = 5 in a 0.75 x 1 x 0.75 cm cell: five stacked along
@@ -27,9 +28,24 @@ Description
       cell), jittered likewise, a point kept when it lies in a cell of the
       region. On cubic cells it gives N per cell on average; on cells that
       are not cubes the lattice and the cells beat: on the Kuipers jet's
-      0.75 x 1 cm cells 2 to 12 parcels per cell for N = 5. Each parcel carries
+      0.75 x 1 cm cells 2 to 12 parcels per cell for N = 5;
+    - volume: round(N*V_cell/V_mean) parcels in each cell (V_mean the
+      region's mean cell volume), each at a uniformly random point of the
+      cell, so that every cell starts at the target fraction to within half
+      a parcel, whatever its size and shape. Use it on tetrahedra and other
+      unstructured cells, where the lattice puts up to twice the mean
+      count in some cells and the cell arrangement fills bounding boxes.
+    Each parcel carries
         nParticle = alpha_s*V_region/(nParcels*pi*d^3/6)
     particles, so that the seeded solids volume is alpha_s*V_region exactly.
+
+    Instead of parcelsPerCell, statisticalWeight W (particles per parcel,
+    MFiX's PIC_CONST_STATWT) sets the parcel density to alpha_s/(W*pi*d^3/6)
+    per unit volume, i.e. parcelsPerCell = alpha_s*V_region/
+    (W*pi*d^3/6*nCells) per mean cell; nParticle is then the value above,
+    within the rounding of the parcel count of W. Use it on meshes
+    whose cells differ in size (tetrahedra), where a parcel count per cell
+    has no fixed meaning; it needs arrangement lattice or volume.
 
 Usage
     mppicSeedParcels [-dict <file>]
@@ -40,9 +56,10 @@ Usage
     box             (0 0 0) (0.05 0.1 0.005);   // region box only
     cellZone        bed;            // region cellZone only
     solidsFraction  0.3;
-    parcelsPerCell  10;
+    parcelsPerCell  10;             // or statisticalWeight, not both
+    statisticalWeight 4;            // particles per parcel (not with cell)
     diameter        2e-4;           // particle diameter [m]
-    arrangement     cell;           // cell or lattice
+    arrangement     cell;           // cell, lattice or volume
     jitter          0.5;
     seed            1;
     positionsFile   kinematicCloudPositions;    // in constant/
@@ -54,18 +71,24 @@ Usage
         box            | min and max corners [m]               | (region box) | min < max
         cellZone       | name of the cellZone                  | (region cellZone) |
         solidsFraction | target solids fraction                | (required) | (0, 1)
-        parcelsPerCell | parcels per cell                      | (required) | [1, inf), an integer with cell
+        parcelsPerCell | parcels per cell                      | (this or statisticalWeight) | [1, inf), an integer with cell
+        statisticalWeight | particles per parcel (lattice, volume) | (this or parcelsPerCell) | [1, inf)
         diameter       | particle diameter [m]                 | (required) | (0, inf)
-        arrangement    | cell (N per cell) or lattice           | lattice | cell, lattice
-        jitter         | random offset, fraction of the spacing | 0.5    | [0, 1)
+        arrangement    | cell (N per cell), lattice, or volume
+                         (N*V_cell/V_mean per cell)             | lattice | cell, lattice, volume
+        jitter         | random offset, fraction of the spacing
+                         (lattice, cell)                        | 0.5    | [0, 1)
         seed           | random seed                           | 1       | integer
         positionsFile  | output file in constant/              | kinematicCloudPositions |
     \endtable
+    Exactly one of parcelsPerCell and statisticalWeight; statisticalWeight
+    with arrangement cell stops with a FatalIOError.
     MFiX equivalents: PIC_CONST_STATWT / PIC_CONST_NPC (constant
     statistical weight or parcels per cell) of the initial condition.
 
     Writes constant/<positionsFile> and constant/seededParcels with
-    nParticle, nParcels and solidsVolume; a cloud dictionary uses it as
+    nParticle, nParcels, solidsVolume, regionVolume, nCells and
+    parcelsPerCell (the mean per cell); a cloud dictionary uses it as
         #include "seededParcels"
         ... nParticle $nParticle;
 
@@ -159,7 +182,6 @@ int main(int argc, char *argv[])
 
     using namespace mppicCoefficients;
     const scalar alpha = read(dict, "solidsFraction", bounds::open(0, 1));
-    const scalar perCell = read(dict, "parcelsPerCell", bounds::atLeast(1));
     const scalar diameter = read(dict, "diameter", bounds::above(0));
     const scalar jitter = read(dict, "jitter", 0.5, bounds::closedOpen(0, 1));
     const label seed = dict.lookupOrDefault<label>("seed", 1);
@@ -188,8 +210,43 @@ int main(int argc, char *argv[])
             << exit(FatalIOError);
     }
 
-    Random rndGen(seed);
+    const scalar particleVolume = constant::mathematical::pi/6*pow3(diameter);
     const word arrangement(dict.lookupOrDefault<word>("arrangement", "lattice"));
+
+    // Parcels per mean cell: given, or from the statistical weight
+    const bool byCount = dict.found("parcelsPerCell");
+    const bool byWeight = dict.found("statisticalWeight");
+    if (byCount == byWeight)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": give exactly one of the "
+            << "keywords parcelsPerCell and statisticalWeight ("
+            << (byCount ? "both" : "neither") << " given)"
+            << exit(FatalIOError);
+    }
+    scalar perCell = 0;
+    if (byCount)
+    {
+        perCell = read(dict, "parcelsPerCell", bounds::atLeast(1));
+    }
+    else
+    {
+        const scalar weight =
+            read(dict, "statisticalWeight", bounds::atLeast(1));
+        if (arrangement == "cell")
+        {
+            FatalIOErrorInFunction(dict)
+                << "Dictionary " << dict.name() << ", keyword "
+                << "statisticalWeight: value " << weight << " needs "
+                << "arrangement lattice or volume (arrangement cell takes an "
+                << "integer parcelsPerCell)" << exit(FatalIOError);
+        }
+        perCell = alpha*regionVolume/(weight*particleVolume*nRegionCells);
+        Info<< "Statistical weight " << weight << ": " << perCell
+            << " parcels per mean cell" << nl;
+    }
+
+    Random rndGen(seed);
 
     DynamicList<point> positions;
     if (arrangement == "lattice")
@@ -208,15 +265,27 @@ int main(int argc, char *argv[])
         positions =
             cellPositions(mesh, inRegion, label(perCell), jitter, rndGen);
     }
+    else if (arrangement == "volume")
+    {
+        positions = volumePositions(mesh, inRegion, perCell, rndGen);
+    }
     else
     {
         FatalIOErrorInFunction(dict)
             << "Dictionary " << dict.name() << ", keyword arrangement: value "
-            << arrangement << " is not one of (lattice cell)"
+            << arrangement << " is not one of (lattice cell volume)"
             << exit(FatalIOError);
     }
 
-    const scalar particleVolume = constant::mathematical::pi/6*pow3(diameter);
+    if (positions.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": no parcel placed in "
+            << "the region (" << perCell << " parcels per mean cell); "
+            << "raise parcelsPerCell or lower statisticalWeight"
+            << exit(FatalIOError);
+    }
+
     const scalar solidsVolume = alpha*regionVolume;
     const scalar nParticle = solidsVolume/(positions.size()*particleVolume);
 
@@ -254,6 +323,8 @@ int main(int argc, char *argv[])
     seeded.add("nParcels", positionsIO.size());
     seeded.add("solidsVolume", solidsVolume);
     seeded.add("regionVolume", regionVolume);
+    seeded.add("nCells", nRegionCells);
+    seeded.add("parcelsPerCell", scalar(positionsIO.size())/nRegionCells);
     seeded.regIOobject::write();
 
     Info<< "Seeded " << positionsIO.size() << " parcels in " << nRegionCells
