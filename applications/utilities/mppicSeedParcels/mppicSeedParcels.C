@@ -192,17 +192,8 @@ int main(int argc, char *argv[])
 
     const boolList inRegion(regionCells(mesh, dict));
 
-    // Region volume
-    scalar regionVolume = 0;
     label nRegionCells = 0;
-    forAll(inRegion, celli)
-    {
-        if (inRegion[celli])
-        {
-            regionVolume += mesh.V()[celli];
-            ++nRegionCells;
-        }
-    }
+    const scalar volume = regionVolume(mesh, inRegion, nRegionCells);
     if (nRegionCells == 0)
     {
         FatalIOErrorInFunction(dict)
@@ -241,7 +232,7 @@ int main(int argc, char *argv[])
                 << "arrangement lattice or volume (arrangement cell takes an "
                 << "integer parcelsPerCell)" << exit(FatalIOError);
         }
-        perCell = alpha*regionVolume/(weight*particleVolume*nRegionCells);
+        perCell = alpha*volume/(weight*particleVolume*nRegionCells);
         Info<< "Statistical weight " << weight << ": " << perCell
             << " parcels per mean cell" << nl;
     }
@@ -286,7 +277,7 @@ int main(int argc, char *argv[])
             << exit(FatalIOError);
     }
 
-    const scalar solidsVolume = alpha*regionVolume;
+    const scalar solidsVolume = alpha*volume;
     const scalar nParticle = solidsVolume/(positions.size()*particleVolume);
 
     IOField<point> positionsIO
@@ -322,7 +313,7 @@ int main(int argc, char *argv[])
     seeded.add("nParticle", nParticle);
     seeded.add("nParcels", positionsIO.size());
     seeded.add("solidsVolume", solidsVolume);
-    seeded.add("regionVolume", regionVolume);
+    seeded.add("regionVolume", volume);
     seeded.add("nCells", nRegionCells);
     seeded.add("parcelsPerCell", scalar(positionsIO.size())/nRegionCells);
     seeded.regIOobject::write();
