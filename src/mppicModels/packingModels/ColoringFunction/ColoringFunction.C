@@ -44,7 +44,12 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
         this->coeffs().lookupOrDefault("conserveMomentum", false)
     ),
     entries_(),
-    reactions_()
+    reactions_(),
+    holdSupportedPacks_
+    (
+        this->coeffs().lookupOrDefault("holdSupportedPacks", true)
+    ),
+    support_(owner.mesh(), this->coeffs())
 {}
 
 
@@ -60,7 +65,9 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     capacityLimit_(cm.capacityLimit_),
     conserveMomentum_(cm.conserveMomentum_),
     entries_(),
-    reactions_()
+    reactions_(),
+    holdSupportedPacks_(cm.holdSupportedPacks_),
+    support_(cm.support_)
 {}
 
 
@@ -137,6 +144,38 @@ Foam::PackingModels::ColoringFunction<CloudType>::cellPackingValues() const
 
 
 template<class CloudType>
+Foam::boolList
+Foam::PackingModels::ColoringFunction<CloudType>::fullCells() const
+{
+    const fvMesh& mesh = this->owner().mesh();
+
+    scalarField volume(mesh.nCells(), Zero);
+    scalarField largest(mesh.nCells(), Zero);
+
+    for (const typename CloudType::parcelType& p : this->owner())
+    {
+        const label celli = entries_.finalCell(p);
+        if (celli >= 0)
+        {
+            const scalar v = p.nParticle()*p.volume();
+            volume[celli] += v;
+            largest[celli] = max(largest[celli], v);
+        }
+    }
+
+    // No room for half of its largest parcel, as the capacity limit admits
+    boolList full(mesh.nCells());
+    forAll(full, celli)
+    {
+        const scalar room =
+            rules_.closePackFraction()*mesh.V()[celli] - volume[celli];
+        full[celli] = largest[celli] > 0 && room < 0.5*largest[celli];
+    }
+    return full;
+}
+
+
+template<class CloudType>
 void Foam::PackingModels::ColoringFunction<CloudType>::recordChange
 (
     const typename CloudType::parcelType& p,
@@ -170,6 +209,11 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
             rules_.closePackFraction(),
             this->owner().db().time().deltaTValue()
         );
+
+        if (holdSupportedPacks_ && capacityLimit_)
+        {
+            support_.update(this->owner().g().value(), fullCells());
+        }
     }
     else
     {
@@ -238,8 +282,14 @@ velocityCorrection
                 deltaT
             );
 
-        const vector kept =
+        vector kept =
             entries_.keptVelocity(p, p.U() + correction, pack.uMean);
+
+        if (support_.held(entries_.finalCell(p)))
+        {
+            kept = support_.restingVelocity(kept);
+        }
+
         recordChange(p, kept - p.U(), pack.cell);
         p.U() = kept - move;
 
