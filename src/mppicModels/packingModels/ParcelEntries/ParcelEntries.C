@@ -257,12 +257,7 @@ Foam::vector Foam::ParcelEntries<CloudType>::keptVelocity
 
     if (e && !e->admitted)
     {
-        // The pack may push the parcel back (uPack against the entry
-        // direction) but not draw it in: a refused parcel found no room,
-        // so whatever velocity the pack stores along the entry direction
-        // did not move it on
-        const scalar packInward = min(uPack & e->direction, scalar(0));
-        const scalar inward = (U & e->direction) - packInward;
+        const scalar inward = (U - uPack) & e->direction;
         if (inward > 0)
         {
             return U - inward*e->direction;
