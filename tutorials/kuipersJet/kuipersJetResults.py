@@ -420,7 +420,11 @@ def main():
     parser.add_argument("--row", action="store_true")
     parser.add_argument("--wallTime", type=float, default=None)
     parser.add_argument("--failure", default="")
+    parser.add_argument("--tableHead", action="store_true")
     args = parser.parse_args()
+    if args.tableHead:
+        print(TABLE_HEAD)
+        return 0
 
     res = summary(args.case, args.t0)
     if args.row:

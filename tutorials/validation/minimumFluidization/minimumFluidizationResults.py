@@ -1,0 +1,256 @@
+#!/usr/bin/python3
+"""Fluidization curve of a run of the minimumFluidization case.
+
+Reads postProcessing/bedPressureDrop/0/bedPressureDrop.dat (every step),
+the inlet ramp (0/U.air: rampTime, rampVelocity; U = rampVelocity*t/rampTime)
+and the bed (constant/kinematicCloudProperties: rho0, closePackFraction,
+particle diameter, switchFraction; constant/transportProperties: rho.air,
+nu). Prints and plots:
+
+    dP* = (deltaP - gas head)/(m g/A)  against U           (seed 2, eq 12)
+
+smoothed over 0.05 m/s of U (the bubbling bed's fluctuations), and the
+seed's construction of Umf: a straight line fitted to the fixed-bed branch
+(dP* < 0.8 of the plateau), a straight line fitted to the plateau (U above
+1.5 Umf), Umf where they cross (iterated from the first U with dP* >= 0.95).
+Against:
+  - Ergun for the bed's voidage eps = 1 - closePackFraction:
+      dP*_Ergun = [150 mu (1-eps)^2 U/(eps^3 d^2) + 1.75 rho_g (1-eps) U^2/
+                   (eps^3 d)] / (rho_p (1-eps) g)
+    and the fixed-bed error: the mean of |dP*/dP*_Ergun - 1| over
+    0.3-0.8 Umf;
+  - Wen-Yu for the same bed (seed 2 eqs 13-14, what -drag wenYu uses);
+  - the measured Umf 0.182 m/s and the plateau 1.
+
+Usage:
+    minimumFluidizationResults.py [--case DIR] [--label L] [--plot]
+        [--check] [--row] [--tableHead]
+"""
+import argparse
+import math
+import os
+import re
+import sys
+
+MEASURED_UMF = 0.182
+G = 9.81
+TABLE_HEAD = ("| run | Umf [m/s] | vs 0.182 | plateau dP* | fixed bed vs Ergun "
+              "| Ergun Umf [m/s] |\n|---|---|---|---|---|---|")
+
+
+def entry(path, key):
+    """First 'key value;' of a dictionary file, as a float."""
+    text = open(path).read()
+    match = re.search(r"^\s*%s\s+([-0-9.eE+]+)\s*;" % key, text, re.M)
+    if not match:
+        raise SystemExit("no %s in %s" % (key, path))
+    return float(match.group(1))
+
+
+def particle_diameter(case):
+    text = open(os.path.join(case, "constant", "kinematicCloudProperties")).read()
+    return float(re.search(r"value\s+([0-9.eE+-]+)\s*;", text).group(1))
+
+
+def bed(case):
+    cloud = os.path.join(case, "constant", "kinematicCloudProperties")
+    transport = os.path.join(case, "constant", "transportProperties")
+    rho_g = entry(transport, "rho.air")
+    return {
+        "rho_p": entry(cloud, "rho0"),
+        "alpha": entry(cloud, "closePackFraction"),
+        "switch": entry(cloud, "switchFraction"),
+        "d": particle_diameter(case),
+        "rho_g": rho_g,
+        "mu": rho_g*entry(transport, "nu"),
+        "rampTime": entry(os.path.join(case, "0", "U.air"), "rampTime"),
+        "rampVelocity": entry(os.path.join(case, "0", "U.air"), "rampVelocity"),
+    }
+
+
+def ergun_star(b, U):
+    eps = 1 - b["alpha"]
+    grad = (150*b["mu"]*b["alpha"]**2*U/(eps**3*b["d"]**2)
+            + 1.75*b["rho_g"]*b["alpha"]*U**2/(eps**3*b["d"]))
+    return grad/(b["rho_p"]*b["alpha"]*G)
+
+
+def wen_yu_star(b, U):
+    """Wen-Yu on a fixed bed: beta*slip, slip = U/eps, Re = eps rho slip d/mu."""
+    eps = 1 - b["alpha"]
+    Re = b["rho_g"]*U*b["d"]/b["mu"]
+    cd_re = 0.44*Re if Re >= 1000 else 24*(1 + 0.15*Re**0.687)
+    beta = 0.75*cd_re*b["mu"]/b["d"]**2*eps**-2.65*b["alpha"]
+    return beta*U/eps/(b["rho_p"]*b["alpha"]*G)
+
+
+def crossing(f, target, lo=1e-4, hi=5.0):
+    """U where f(U) = target (f increasing), by bisection."""
+    for _ in range(100):
+        mid = 0.5*(lo + hi)
+        lo, hi = (mid, hi) if f(mid) < target else (lo, mid)
+    return 0.5*(lo + hi)
+
+
+def curve(case, b):
+    path = os.path.join(case, "postProcessing", "bedPressureDrop", "0",
+                        "bedPressureDrop.dat")
+    points = []
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        t, _, _, dp, head, weight = [float(v) for v in line.split()[:6]]
+        U = b["rampVelocity"]*min(t, b["rampTime"])/b["rampTime"]
+        points.append((U, (dp - head)/weight))
+    return points
+
+
+def smooth(points, width=0.05):
+    """Running mean over a window of U of the given width."""
+    out = []
+    j0 = 0
+    total = 0.0
+    window = []
+    for U, p in points:
+        window.append((U, p))
+        total += p
+        while window[0][0] < U - width:
+            total -= window.pop(0)[1]
+        out.append((U - 0.5*width, total/len(window)))
+    return [(U, p) for U, p in out if U > 0]
+
+
+def line_fit(points):
+    n = len(points)
+    mx = sum(u for u, _ in points)/n
+    my = sum(p for _, p in points)/n
+    sxx = sum((u - mx)**2 for u, _ in points)
+    slope = sum((u - mx)*(p - my) for u, p in points)/sxx if sxx > 0 else 0.0
+    return slope, my - slope*mx
+
+
+def construct_umf(points):
+    """The seed's construction: fixed-bed line and plateau line cross."""
+    first = next((U for U, p in points if p >= 0.95), None)
+    if first is None:
+        return None
+    umf = first
+    for _ in range(5):
+        plateau_pts = [(U, p) for U, p in points if U >= 1.5*umf]
+        if len(plateau_pts) < 3:
+            return None
+        ps, pi = line_fit(plateau_pts)
+        plateau = sum(p for _, p in plateau_pts)/len(plateau_pts)
+        fixed_pts = [(U, p) for U, p in points
+                     if 0.1*umf <= U and p < 0.8*plateau and U < umf]
+        if len(fixed_pts) < 3:
+            return None
+        fs, fi = line_fit(fixed_pts)
+        umf = (pi - fi)/(fs - ps)
+    return {"umf": umf, "plateau": plateau, "fixed": (fs, fi),
+            "plateauLine": (ps, pi)}
+
+
+def summary(case):
+    b = bed(case)
+    raw = curve(case, b)
+    points = smooth(raw)
+    res = {"bed": b, "raw": raw, "points": points,
+           "ergunUmf": crossing(lambda U: ergun_star(b, U), 1.0),
+           "wenYuUmf": crossing(lambda U: wen_yu_star(b, U), 1.0)}
+    fit = construct_umf(points)
+    if fit:
+        res.update(fit)
+        branch = [(U, p) for U, p in points
+                  if 0.3*fit["umf"] <= U <= 0.8*fit["umf"]]
+        if branch:
+            res["fixedError"] = sum(abs(p/ergun_star(b, U) - 1)
+                                    for U, p in branch)/len(branch)
+    return res
+
+
+def report(res, label):
+    b = res["bed"]
+    print("%s: ramp 0-%g m/s over %g s, close pack %g (voidage %g), drag %s"
+          % (label, b["rampVelocity"], b["rampTime"], b["alpha"],
+             1 - b["alpha"], "Wen-Yu" if b["switch"] < 0.1 else "Ergun/Wen-Yu"))
+    print("  Umf of Ergun for this voidage %.4f m/s, of Wen-Yu %.4f m/s"
+          % (res["ergunUmf"], res["wenYuUmf"]))
+    if "umf" not in res:
+        print("  no transition found")
+        return
+    print("  Umf (fits crossing) %.4f m/s: %+.1f %% from the measured 0.182"
+          % (res["umf"], 100*(res["umf"]/MEASURED_UMF - 1)))
+    print("  plateau dP* %.4f" % res["plateau"])
+    if "fixedError" in res:
+        print("  fixed-bed branch vs Ergun (0.3-0.8 Umf): mean |error| %.1f %%"
+              % (100*res["fixedError"]))
+
+
+def plot(res, case, label):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    b = res["bed"]
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    ax.plot([U for U, _ in res["raw"]], [p for _, p in res["raw"]], lw=0.3,
+            color="0.7", label="every step")
+    ax.plot([U for U, _ in res["points"]], [p for _, p in res["points"]],
+            lw=1.5, color="tab:blue", label="ours, mean over 0.05 m/s")
+    Us = [0.005*i for i in range(1, int(b["rampVelocity"]/0.005) + 1)]
+    ax.plot(Us, [ergun_star(b, U) for U in Us], "k--", lw=1,
+            label="Ergun, voidage %.2f" % (1 - b["alpha"]))
+    ax.plot(Us, [wen_yu_star(b, U) for U in Us], ":", color="tab:green", lw=1.2,
+            label="Wen-Yu, fixed bed")
+    ax.axhline(1, color="k", lw=0.8)
+    ax.axvline(MEASURED_UMF, color="tab:red", lw=0.8, ls="-.",
+               label="measured Umf 0.182 m/s")
+    if "umf" in res:
+        fs, fi = res["fixed"]
+        ps, pi = res["plateauLine"]
+        ax.plot([0, res["umf"]*1.2], [fi, fi + fs*res["umf"]*1.2], color="tab:orange",
+                lw=1, label="fits, Umf %.3f m/s" % res["umf"])
+        ax.plot([res["umf"]*0.8, b["rampVelocity"]],
+                [pi + ps*res["umf"]*0.8, pi + ps*b["rampVelocity"]],
+                color="tab:orange", lw=1)
+    ax.set_xlim(0, b["rampVelocity"])
+    ax.set_ylim(0, 1.6)
+    ax.set_xlabel("inlet (superficial) gas velocity U [m/s]")
+    ax.set_ylabel("dP* = deltaP/(m g/A)")
+    ax.set_title("minimum fluidization, %s" % label)
+    ax.legend(fontsize=8, loc="lower right")
+    fig.tight_layout()
+    path = os.path.join(case, "minimumFluidization_%s.png" % label)
+    fig.savefig(path, dpi=100)
+    print("  wrote " + path)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--case", default=".")
+    parser.add_argument("--label", default="run")
+    parser.add_argument("--plot", action="store_true")
+    parser.add_argument("--row", action="store_true")
+    parser.add_argument("--tableHead", action="store_true")
+    args = parser.parse_args()
+    if args.tableHead:
+        print(TABLE_HEAD)
+        return 0
+    res = summary(args.case)
+    if args.row:
+        if "umf" in res:
+            print("| %s | %.4f | %+.1f %% | %.4f | %.1f %% | %.4f |"
+                  % (args.label, res["umf"], 100*(res["umf"]/MEASURED_UMF - 1),
+                     res["plateau"], 100*res.get("fixedError", float("nan")),
+                     res["ergunUmf"]))
+        else:
+            print("| %s | - | - | - | - | %.4f |" % (args.label, res["ergunUmf"]))
+    else:
+        report(res, args.label)
+    if args.plot:
+        plot(res, args.case, args.label)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

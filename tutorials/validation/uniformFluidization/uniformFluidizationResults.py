@@ -1,0 +1,155 @@
+#!/usr/bin/python3
+"""Uniformly fluidized bed: does the gas carry the bed's weight?
+
+Reads the function objects' output of a run of this case (or of a copy):
+    postProcessing/bedPressureDrop/0/bedPressureDrop.dat  every step
+    postProcessing/packingMonitor/0/packingMonitor.dat    every step
+and prints, over t0 <= t <= end:
+    - the time-mean bed pressure drop less the gas head, over the bed's
+      weight per area (W/A = m_cloud g / A); 1 = the gas carries the weight
+      (the buoyancy, rho_g/rho_p = 4.8e-4 of it, is left in);
+    - its standard deviation and the standard error of the mean from the
+      autocorrelation of the series (blocks of 0.25 s);
+    - the largest cell solids fraction over the window (packingMonitor);
+    - the mean upward force of the packing step over the weight,
+      sum(m dU_y)/dt/(m g) (packingMonitor): where the weight goes that the
+      gas does not carry (every cell of this 2-cell-deep box touches a
+      wall, so the monitor's wall part is all of it and is not shown).
+
+Usage:
+    uniformFluidizationResults.py [--case DIR] [--from T0] [--label L]
+        [--row [--wallTime S] [--failure TEXT]] [--tableHead] [--plot]
+    --row   one markdown table row (TABLE_HEAD; bin/compareSolvers)
+    --plot  uniformFluidization_<label>_pressureDrop.png: deltaP/weight(t)
+"""
+import argparse
+import math
+import os
+import sys
+
+TABLE_HEAD = ("| run | window [s] | deltaP / weight | std | std error of mean "
+              "| packing force / weight | max cell eps_s | wall s / sim s "
+              "| failed |\n|---|---|---|---|---|---|---|---|---|")
+
+
+def read_table(path):
+    """Rows of a function object's .dat file (comment lines skipped)."""
+    rows = []
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        rows.append([float(v) for v in line.split()])
+    return rows
+
+
+def pressure_ratio(case):
+    """(t, (deltaP - gas head)/(W/A)) for every step."""
+    rows = read_table(os.path.join(case, "postProcessing", "bedPressureDrop",
+                                   "0", "bedPressureDrop.dat"))
+    # columns: time pLower pUpper deltaP gasHead weightPerArea ratio
+    return [(r[0], (r[3] - r[4])/r[5]) for r in rows]
+
+
+def monitor(case):
+    """packingMonitor rows: time, parcels, mass, max averaged, max cell..."""
+    return read_table(os.path.join(case, "postProcessing", "packingMonitor",
+                                   "0", "packingMonitor.dat"))
+
+
+def mean_and_error(series, block):
+    """Mean, standard deviation and the standard error of the mean from
+    the means of consecutive blocks of the given duration."""
+    values = [v for _, v in series]
+    n = len(values)
+    mean = sum(values)/n
+    std = math.sqrt(sum((v - mean)**2 for v in values)/n)
+    dt = (series[-1][0] - series[0][0])/max(n - 1, 1)
+    size = max(1, int(round(block/dt)))
+    blocks = [values[i:i + size] for i in range(0, n - size + 1, size)]
+    if len(blocks) < 2:
+        return mean, std, float("nan")
+    means = [sum(b)/len(b) for b in blocks]
+    spread = math.sqrt(sum((m - mean)**2 for m in means)/(len(means) - 1))
+    return mean, std, spread/math.sqrt(len(means))
+
+
+def packing_force(rows, g=9.81):
+    """Mean upward force of the packing step over the cloud's weight
+    (packingMonitor: the momentum it adds per step)."""
+    if len(rows) < 2:
+        return float("nan")
+    duration = rows[-1][0] - rows[0][0] + (rows[1][0] - rows[0][0])
+    return sum(r[9] for r in rows)/duration/(rows[-1][2]*g)
+
+
+def summary(case, t0):
+    series = [(t, r) for t, r in pressure_ratio(case) if t >= t0 - 1e-12]
+    if not series:
+        raise SystemExit("no bedPressureDrop samples after %g s in %s" % (t0, case))
+    mean, std, error = mean_and_error(series, 0.25)
+    rows = [r for r in monitor(case) if r[0] >= t0 - 1e-12]
+    max_cell = max(r[4] for r in rows) if rows else float("nan")
+    packing = packing_force(rows)
+    return {"t0": t0, "t1": series[-1][0], "ratio": mean, "std": std,
+            "error": error, "maxCell": max_cell, "packing": packing,
+            "series": pressure_ratio(case)}
+
+
+def plot(res, case, label):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    ts = [t for t, _ in res["series"]]
+    rs = [r for _, r in res["series"]]
+    fig, ax = plt.subplots(figsize=(8, 3.6))
+    ax.plot(ts, rs, lw=0.5, color="tab:blue", label="(deltaP - gas head)/weight")
+    ax.axhline(1, color="k", lw=0.8, label="bed weight")
+    ax.axhline(res["ratio"], color="tab:red", lw=1.2, ls="--",
+               label="mean %.3f over %g-%g s" % (res["ratio"], res["t0"], res["t1"]))
+    ax.axvspan(res["t0"], res["t1"], color="0.9", zorder=0)
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("deltaP / (W/A)")
+    ax.set_ylim(0, 2.5)
+    ax.set_title("uniform fluidization, 0.5 m/s, %s" % label)
+    ax.legend(fontsize=8, loc="upper right")
+    fig.tight_layout()
+    path = os.path.join(case, "uniformFluidization_%s_pressureDrop.png" % label)
+    fig.savefig(path, dpi=100)
+    print("wrote", path)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--case", default=".")
+    parser.add_argument("--from", dest="t0", type=float, default=2.0)
+    parser.add_argument("--label", default="run")
+    parser.add_argument("--row", action="store_true")
+    parser.add_argument("--plot", action="store_true")
+    parser.add_argument("--tableHead", action="store_true")
+    parser.add_argument("--wallTime", type=float, default=None)
+    parser.add_argument("--failure", default="")
+    args = parser.parse_args()
+    if args.tableHead:
+        print(TABLE_HEAD)
+        return 0
+    res = summary(args.case, args.t0)
+    if args.row:
+        per_second = ("%.0f" % (args.wallTime/res["t1"])
+                      if args.wallTime and res["t1"] > 0 else "-")
+        print("| %s | %g-%g | %.4f | %.3f | %.4f | %.4f | %.3f | %s | %s |"
+              % (args.label, res["t0"], res["t1"], res["ratio"], res["std"],
+                 res["error"], res["packing"], res["maxCell"], per_second,
+                 args.failure or "no"))
+    else:
+        print("%s: (deltaP - gas head)/weight over %g-%g s = %.4f "
+              "(std %.3f, standard error of the mean %.4f); packing force "
+              "%.4f x weight; max cell solids fraction %.3f"
+              % (args.label, res["t0"], res["t1"], res["ratio"], res["std"],
+                 res["error"], res["packing"], res["maxCell"]))
+    if args.plot:
+        plot(res, args.case, args.label)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
