@@ -15,6 +15,10 @@ Description
     Weights are read back as (cell value) x (cell volume) after depositing
     1 at a point; the expected trilinear weights are written out below.
 
+    Next to an inflow patch and a no-slip wall (boundaryInterpolation):
+    linearHat gives the interior gas velocity, cellPoint a blend with the
+    boundary values (the cause of a bubbling bed's missing weight).
+
     diffusion: bandwidth b, pseudo-time T = b^2/4, variance b^2/2 per
     direction; with b = 0.2 m: 0.02 m^2.
 
@@ -195,6 +199,58 @@ void linearHatInterpolation(const fvMesh& cube)
 }
 
 
+// The gas velocity a parcel next to an inflow patch and a no-slip wall
+// sees (uniformFluidization, README): the box's cells hold the interstitial
+// velocity of a bed fluidized at 0.5 m/s superficial and gas fraction 0.52,
+// (0 0.96 0); the bottom patch holds the inflow's 0.5 m/s (gas fraction 1
+// there), the side walls the no-slip 0. A parcel a quarter cell from the
+// bottom and from the left wall, at (0.0625, 0.0625, 0.05):
+//   linearHat: boundary values are not used (the kernel's part beyond the
+//       boundary is reflected into the cell) -> 0.96 exactly;
+//   cellPoint: the cell's vertices on the bottom and the wall take the
+//       boundary values, so the parcel sees a blend: at most 0.8 x 0.96.
+//   The drag on such parcels was too small and they sank onto the bottom,
+//   which then carried 0.2 of a bubbling bed's weight.
+void boundaryInterpolation(const fvMesh& box)
+{
+    volVectorField U
+    (
+        IOobject("U", box.time().timeName(), box),
+        box,
+        dimensionedVector("U", dimVelocity, vector(0, 0.96, 0))
+    );
+    const label bottom = box.boundaryMesh().findPatchID("bottom");
+    const label walls = box.boundaryMesh().findPatchID("walls");
+    U.boundaryFieldRef()[bottom] == vector(0, 0.5, 0);
+    U.boundaryFieldRef()[walls] == vector::zero;
+
+    const point x(0.0625, 0.0625, 0.05);
+    const label celli = box.findCell(x);
+
+    autoPtr<interpolation<vector>> hat(interpolation<vector>::New("linearHat", U));
+    autoPtr<interpolation<vector>> cellPoint
+    (
+        interpolation<vector>::New("cellPoint", U)
+    );
+    const passiveParticle p(box, x);
+
+    checkClose
+    (
+        "linearHat next to inflow and wall: interior 0.96",
+        hat->interpolate(x, celli).y(), 0.96, tol
+    );
+    const scalar blended =
+        cellPoint->interpolate(p.coordinates(), p.currentTetIndices()).y();
+    Info<< "    cellPoint there: " << blended << endl;
+    checkTrue
+    (
+        "cellPoint next to inflow and wall blends in the boundary values "
+        "(" + Foam::name(blended) + " <= 0.8 x 0.96)",
+        blended <= 0.8*0.96
+    );
+}
+
+
 void diffusionSpreading(const fvMesh& cube, const fvMesh& box)
 {
     const point centre(0.45, 0.45, 0.45);
@@ -357,6 +413,7 @@ int main(int argc, char *argv[])
     linearHatConservation(cube);
     linearHatUniformLattice(mesh);
     linearHatInterpolation(cube);
+    boundaryInterpolation(mesh);
     diffusionSpreading(cube, mesh);
     badCoefficients(cube);
 
