@@ -4,7 +4,7 @@
 Reads the function objects' output of a run of this case (or of a copy):
     postProcessing/bedPressureDrop/0/bedPressureDrop.dat  every step
     postProcessing/packingMonitor/0/packingMonitor.dat    every step
-and prints, over t0 <= t <= end:
+and prints, over t0 <= t <= end (default t0: 0.4 x end, after the start-up):
     - the time-mean bed pressure drop less the gas head, over the bed's
       weight per area (W/A = m_cloud g / A); 1 = the gas carries the weight
       (the buoyancy, rho_g/rho_p = 4.8e-4 of it, is left in);
@@ -82,8 +82,11 @@ def packing_force(rows, g=9.81):
     return sum(r[9] for r in rows)/duration/(rows[-1][2]*g)
 
 
-def summary(case, t0):
-    series = [(t, r) for t, r in pressure_ratio(case) if t >= t0 - 1e-12]
+def summary(case, t0=None):
+    everything = pressure_ratio(case)
+    if t0 is None:
+        t0 = 0.4*everything[-1][0]
+    series = [(t, r) for t, r in everything if t >= t0 - 1e-12]
     if not series:
         raise SystemExit("no bedPressureDrop samples after %g s in %s" % (t0, case))
     mean, std, error = mean_and_error(series, 0.25)
@@ -92,7 +95,7 @@ def summary(case, t0):
     packing = packing_force(rows)
     return {"t0": t0, "t1": series[-1][0], "ratio": mean, "std": std,
             "error": error, "maxCell": max_cell, "packing": packing,
-            "series": pressure_ratio(case)}
+            "series": everything}
 
 
 def plot(res, case, label):
@@ -121,7 +124,8 @@ def plot(res, case, label):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--case", default=".")
-    parser.add_argument("--from", dest="t0", type=float, default=2.0)
+    parser.add_argument("--from", dest="t0", type=float, default=None,
+                        help="start of the window (default 0.4 x the run's end)")
     parser.add_argument("--label", default="run")
     parser.add_argument("--row", action="store_true")
     parser.add_argument("--plot", action="store_true")

@@ -1,0 +1,51 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# minimumFluidization <runDir>
+# The fixed-bed branch of tutorials/validation/minimumFluidization
+# (coloringFunction, Gidaspow's law, close pack 0.62, 10 parcels per cell
+# instead of 40 to keep it short): the inlet velocity ramps from 0 to
+# 0.12 m/s (2/3 of the measured Umf 0.182 m/s) over 0.6 s, about 2 minutes.
+# Checks: the bed does not move (Ergun's pressure drop at 0.12 m/s is 0.64
+# of the weight), so the gas pressure drop follows Ergun for the bed's
+# voidage eps = 0.38 (HDPE 0.87 mm, 860 kg/m3; gas 1.0 kg/m3, 1.8e-5 Pa s):
+#   dP*_Ergun(U) = [150 mu (1-eps)^2 U/(eps^3 d^2) + 1.75 rho_g (1-eps) U^2
+#                  /(eps^3 d)] / (rho_p (1-eps) g)
+#   U = 0.06 m/s: (1499.4 + 81.8 Pa/m)/5230.9 Pa/m = 0.3023,
+#   U = 0.12 m/s: (2998.8 + 327.3)/5230.9 = 0.6359
+# each within 10 %, from the mean of dP* over +-0.005 m/s of U.
+#------------------------------------------------------------------------------
+runDir="${1:?usage: minimumFluidization.sh <runDir>}"
+. "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
+
+copyTutorial validation/minimumFluidization "$runDir/case"
+runAllrun "$runDir/case" -ramp 0.6 0.12 -parcelsPerCell 10 || exit 1
+
+cd "$runDir/case" || exit 1
+/usr/bin/python3 - <<'PY'
+import sys
+sys.path.insert(0, ".")
+import minimumFluidizationResults as m
+failures = 0
+def check(ok, what):
+    global failures
+    print(("PASS " if ok else "FAIL ") + what)
+    failures += not ok
+mu, rho_g, rho_p, d, eps, g = 1.8e-5, 1.0, 860.0, 8.7e-4, 0.38, 9.81
+def ergun(U):
+    grad = (150*mu*(1 - eps)**2*U/(eps**3*d**2)
+            + 1.75*rho_g*(1 - eps)*U**2/(eps**3*d))
+    return grad/(rho_p*(1 - eps)*g)
+b = m.bed(".")
+check(abs(b["alpha"] - 0.62) < 1e-12 and b["switch"] == 0.8,
+      "close pack 0.62, Gidaspow switch 0.8")
+raw = m.curve(".", b)
+for U, expected in ((0.06, 0.3023), (0.12, 0.6359)):
+    check(abs(ergun(U)/expected - 1) < 1e-3,
+          "Ergun dP* at %.2f m/s %.4f (hand value %.4f)" % (U, ergun(U), expected))
+    near = [p for u, p in raw if abs(u - U) <= 0.005]
+    mean = sum(near)/len(near)
+    check(abs(mean/expected - 1) <= 0.10,
+          "dP* at %.2f m/s %.4f within 10 %% of Ergun %.4f (%d steps)"
+          % (U, mean, expected, len(near)))
+sys.exit(1 if failures else 0)
+PY
