@@ -32,6 +32,10 @@ Description
     g = 0 -> none held.
     restingVelocity, g down: U = (1 -2 0.5) -> (1 0 0.5);
       U = (1 2 0) unchanged.
+    heldVelocity(U0 before the rules, U after them), g down:
+      falling U0 (0 -2 0), U (0.5 1.7 0) (bounced) -> (0.5 0 0);
+      rising U0 (0 1 0), U (0.2 0.5 0) -> unchanged;
+      rising U0 (0 1 0), U (0 -0.3 0) -> (0 0 0).
     Bad input: supportPatches (nowhere) -> FatalIOError naming the
     keyword, the value and the patches allowed.
 
@@ -147,6 +151,28 @@ int main(int argc, char *argv[])
     (
         "restingVelocity (1 2 0) unchanged",
         mag(rising - vector(1, 2, 0)) < 1e-15
+    );
+
+    const vector stopped =
+        support.heldVelocity(vector(0, -2, 0), vector(0.5, 1.7, 0));
+    checkTrue
+    (
+        "heldVelocity falling (0 -2 0), rules (0.5 1.7 0) -> (0.5 0 0)",
+        mag(stopped - vector(0.5, 0, 0)) < 1e-15
+    );
+    const vector rose =
+        support.heldVelocity(vector(0, 1, 0), vector(0.2, 0.5, 0));
+    checkTrue
+    (
+        "heldVelocity rising (0 1 0), rules (0.2 0.5 0) unchanged",
+        mag(rose - vector(0.2, 0.5, 0)) < 1e-15
+    );
+    const vector turned =
+        support.heldVelocity(vector(0, 1, 0), vector(0, -0.3, 0));
+    checkTrue
+    (
+        "heldVelocity rising (0 1 0), rules (0 -0.3 0) -> (0 0 0)",
+        mag(turned) < 1e-15
     );
 
     dictionary nowhere;

@@ -287,7 +287,7 @@ velocityCorrection
 
         if (support_.held(entries_.finalCell(p)))
         {
-            kept = support_.restingVelocity(kept);
+            kept = support_.heldVelocity(p.U(), kept);
         }
 
         recordChange(p, kept - p.U(), pack.cell);
