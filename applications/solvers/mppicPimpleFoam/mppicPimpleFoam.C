@@ -47,18 +47,6 @@ Description
     reconstructFlux.H). On orthogonal hexahedra the two are the same, and so
     are the answers of this solver and stock MPPICFoam.
 
-    The gas cell velocity after each pressure correction is, as in stock
-    MPPICFoam, HbyA minus rAU times the reconstructed pressure gradient and
-    forces. Where the gas fraction jumps (a packed bed's surface; an inflow
-    patch of gas fraction 1 under a bed) the face pressure gradients on two
-    sides of a cell belong to very different flows, and the cell velocity
-    comes out wrong: in a fixed bed at 0.62 the bottom and top rows of
-    cells got half the interstitial velocity of the rows between, their
-    parcels half the drag. With PIMPLE { gasVelocityFromFlux true; } the
-    cell velocity is the superficial flux through its faces reconstructed
-    (reconstructFlux) over the cell's gas fraction, which continuity makes
-    right in every row (minimumFluidization README).
-
     The gas fraction is one minus the solids fraction deposited per cell
     (solidsFractionFrom cell, the default, as MPPICFoam) or by the cloud's
     averagingMethod (solidsFractionFrom averaging, as MFiX-PIC deposits
@@ -76,13 +64,6 @@ Usage
     transportModel, nu), constant/<cloud>Properties (the cloud, with
     constantProperties/alphaMax), constant/turbulenceProperties.<name>,
     constant/g, 0/U.<name>, 0/p and system/fvSolution PIMPLE.
-
-    PIMPLE keywords of its own:
-    \table
-        Keyword             | Meaning                                  | Default | Range
-        gasVelocityFromFlux | gas cell velocity from the superficial
-                              flux over the gas fraction               | false   | bool
-    \endtable
 
 \*---------------------------------------------------------------------------*/
 
