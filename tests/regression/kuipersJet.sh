@@ -11,7 +11,7 @@
 #     (the field is cell-based: one parcel is 0.12 of a cell);
 #   - the bed pressure drop over 0.1-0.2 s, after the start-up jump of the
 #     packed bed, lies within 15 % of the bed weight per area,
-#     6.8229*9.81/(0.57*0.015) = 7828 Pa (measured 1.08 x).
+#     6.8229*9.81/(0.57*0.015) = 7828 Pa (measured 1.11 x).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: kuipersJet.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
