@@ -11,8 +11,10 @@ nu). Prints and plots:
 
 smoothed over 0.05 m/s of U (the bubbling bed's fluctuations), and the
 seed's construction of Umf: a straight line fitted to the fixed-bed branch
-(dP* < 0.8 of the plateau), a straight line fitted to the plateau (U above
-1.5 Umf), Umf where they cross (iterated from the first U with dP* >= 0.95).
+(dP* < 0.8 of the plateau), a straight line for the plateau (U above
+1.5 Umf; horizontal, the mean there), Umf where they cross (iterated
+from the first U with dP* >= 0.95); and where the curve first falls 3 %
+below the fixed-bed line, the velocity at which the bed unlocks.
 Against:
   - Ergun for the bed's voidage eps = 1 - closePackFraction:
       dP*_Ergun = [150 mu (1-eps)^2 U/(eps^3 d^2) + 1.75 rho_g (1-eps) U^2/
@@ -34,8 +36,9 @@ import sys
 
 MEASURED_UMF = 0.182
 G = 9.81
-TABLE_HEAD = ("| run | Umf [m/s] | vs 0.182 | plateau dP* | fixed bed vs Ergun "
-              "| Ergun Umf [m/s] |\n|---|---|---|---|---|---|")
+TABLE_HEAD = ("| run | Umf, fits [m/s] | vs 0.182 | bed unlocks at [m/s] "
+              "| plateau dP* | fixed bed vs Ergun | Ergun Umf [m/s] |\n"
+              "|---|---|---|---|---|---|---|")
 
 
 def entry(path, key):
@@ -130,25 +133,28 @@ def line_fit(points):
 
 
 def construct_umf(points):
-    """The seed's construction: fixed-bed line and plateau line cross."""
+    """The seed's construction: the fixed-bed line crosses the plateau, a
+    horizontal line at the mean dP* above 1.5 Umf; also where the curve
+    leaves the fixed-bed line (3 % below it): where the bed unlocks."""
     first = next((U for U, p in points if p >= 0.95), None)
     if first is None:
         return None
     umf = first
     for _ in range(5):
-        plateau_pts = [(U, p) for U, p in points if U >= 1.5*umf]
+        plateau_pts = [p for U, p in points if U >= 1.5*umf]
         if len(plateau_pts) < 3:
             return None
-        ps, pi = line_fit(plateau_pts)
-        plateau = sum(p for _, p in plateau_pts)/len(plateau_pts)
+        plateau = sum(plateau_pts)/len(plateau_pts)
         fixed_pts = [(U, p) for U, p in points
                      if 0.1*umf <= U and p < 0.8*plateau and U < umf]
         if len(fixed_pts) < 3:
             return None
         fs, fi = line_fit(fixed_pts)
-        umf = (pi - fi)/(fs - ps)
+        umf = (plateau - fi)/fs
+    departure = next((U for U, p in points
+                      if U > 0.5*umf and p < 0.97*(fi + fs*U)), None)
     return {"umf": umf, "plateau": plateau, "fixed": (fs, fi),
-            "plateauLine": (ps, pi)}
+            "departure": departure}
 
 
 def summary(case):
@@ -182,6 +188,10 @@ def report(res, label):
     print("  Umf (fits crossing) %.4f m/s: %+.1f %% from the measured 0.182"
           % (res["umf"], 100*(res["umf"]/MEASURED_UMF - 1)))
     print("  plateau dP* %.4f" % res["plateau"])
+    if res.get("departure"):
+        print("  the curve leaves the fixed-bed line (3 %% below it) at %.4f m/s: "
+              "%+.1f %% from 0.182" % (res["departure"],
+                                      100*(res["departure"]/MEASURED_UMF - 1)))
     if "fixedError" in res:
         print("  fixed-bed branch vs Ergun (0.3-0.8 Umf): mean |error| %.1f %%"
               % (100*res["fixedError"]))
@@ -207,12 +217,13 @@ def plot(res, case, label):
                label="measured Umf 0.182 m/s")
     if "umf" in res:
         fs, fi = res["fixed"]
-        ps, pi = res["plateauLine"]
         ax.plot([0, res["umf"]*1.2], [fi, fi + fs*res["umf"]*1.2], color="tab:orange",
                 lw=1, label="fits, Umf %.3f m/s" % res["umf"])
-        ax.plot([res["umf"]*0.8, b["rampVelocity"]],
-                [pi + ps*res["umf"]*0.8, pi + ps*b["rampVelocity"]],
+        ax.plot([res["umf"]*0.8, b["rampVelocity"]], [res["plateau"]]*2,
                 color="tab:orange", lw=1)
+        if res.get("departure"):
+            ax.axvline(res["departure"], color="tab:purple", lw=0.8, ls=":",
+                       label="bed unlocks, %.3f m/s" % res["departure"])
     ax.set_xlim(0, b["rampVelocity"])
     ax.set_ylim(0, 1.6)
     ax.set_xlabel("inlet (superficial) gas velocity U [m/s]")
@@ -239,12 +250,13 @@ def main():
     res = summary(args.case)
     if args.row:
         if "umf" in res:
-            print("| %s | %.4f | %+.1f %% | %.4f | %.1f %% | %.4f |"
+            print("| %s | %.4f | %+.1f %% | %s | %.4f | %.1f %% | %.4f |"
                   % (args.label, res["umf"], 100*(res["umf"]/MEASURED_UMF - 1),
+                     "%.4f" % res["departure"] if res.get("departure") else "-",
                      res["plateau"], 100*res.get("fixedError", float("nan")),
                      res["ergunUmf"]))
         else:
-            print("| %s | - | - | - | - | %.4f |" % (args.label, res["ergunUmf"]))
+            print("| %s | - | - | - | - | - | %.4f |" % (args.label, res["ergunUmf"]))
     else:
         report(res, args.label)
     if args.plot:
