@@ -79,12 +79,14 @@ def ergun_star(b, U):
 
 
 def wen_yu_star(b, U):
-    """Wen-Yu on a fixed bed: beta*slip, slip = U/eps, Re = eps rho slip d/mu."""
+    """Wen-Yu on a fixed bed, in the form of Ergun's (two-fluid momentum
+    with eps grad p): grad p = beta*slip/eps, slip = U/eps, Re = eps rho
+    slip d/mu = rho U d/mu, beta = 3/4 Cd rho eps (1-eps) slip/d eps^-2.65."""
     eps = 1 - b["alpha"]
     Re = b["rho_g"]*U*b["d"]/b["mu"]
     cd_re = 0.44*Re if Re >= 1000 else 24*(1 + 0.15*Re**0.687)
     beta = 0.75*cd_re*b["mu"]/b["d"]**2*eps**-2.65*b["alpha"]
-    return beta*U/eps/(b["rho_p"]*b["alpha"]*G)
+    return beta*(U/eps)/eps/(b["rho_p"]*b["alpha"]*G)
 
 
 def crossing(f, target, lo=1e-4, hi=5.0):
