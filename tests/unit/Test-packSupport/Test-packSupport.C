@@ -24,11 +24,13 @@ Description
     g = (-9.81 -9.81 0)/sqrt(2): the lower faces are the bottom (x
     normal . gHat = 0.707 > 0.1) and the x-min face of each cell, with
     equal weights (areas 0.025 each, both 0.707): a cell is held when one
-    of the two rests on support (at least half of the weight). With every
-    cell full, all 32 are held (column 0 rests on the x-min wall, row 0
-    on the bottom). With only column 3 full: row 0 of column 3 rests on
-    the bottom (half the weight) -> held; row j > 0: bottom neighbour
-    held (half) -> held: 8 held.
+    of the two rests on support (at least half of the weight). The walls
+    are then 45 degrees from the horizontal: with the default supportAngle
+    40 (cos 0.766 > 0.707) they do not hold, none held. With supportAngle
+    50 (cos 0.643): every cell full, all 32 are held (column 0 rests on
+    the x-min wall, row 0 on the bottom); only column 3 full: row 0 of
+    column 3 rests on the bottom (half the weight) -> held; row j > 0:
+    bottom neighbour held (half) -> held: 8 held.
     g = 0 -> none held.
     restingVelocity, g down: U = (1 -2 0.5) -> (1 0 0.5);
       U = (1 2 0) unchanged.
@@ -37,7 +39,8 @@ Description
       rising U0 (0 1 0), U (0.2 0.5 0) -> unchanged;
       rising U0 (0 1 0), U (0 -0.3 0) -> (0 0 0).
     Bad input: supportPatches (nowhere) -> FatalIOError naming the
-    keyword, the value and the patches allowed.
+    keyword, the value and the patches allowed; supportAngle 0 and 95 ->
+    FatalIOError naming the keyword, the value and (0, 90].
 
 \*---------------------------------------------------------------------------*/
 
@@ -119,21 +122,37 @@ int main(int argc, char *argv[])
     );
     checkTrue("g up, top: 15 held", countHeld(hanging, nCells) == 15);
 
+    // Gravity 45 degrees from the walls: with the default supportAngle 40
+    // the walls are too steep to hold; with supportAngle 50 they hold
     const vector gSlant(-9.81/Foam::sqrt(2.0), -9.81/Foam::sqrt(2.0), 0);
     support.update(gSlant, boolList(nCells, true));
-    checkTrue("g slanted, all full: 32 held", countHeld(support, nCells) == 32);
+    checkTrue
+    (
+        "g slanted 45, supportAngle 40: walls too steep, none held",
+        countHeld(support, nCells) == 0
+    );
+
+    dictionary wide;
+    wide.add("supportAngle", 50.0);
+    PackSupport leaning(mesh, wide);
+    leaning.update(gSlant, boolList(nCells, true));
+    checkTrue
+    (
+        "g slanted 45, supportAngle 50, all full: 32 held",
+        countHeld(leaning, nCells) == 32
+    );
 
     boolList lastColumn(nCells, false);
     for (label row = 0; row < 8; ++row)
     {
         lastColumn[3 + 4*row] = true;
     }
-    support.update(gSlant, lastColumn);
+    leaning.update(gSlant, lastColumn);
     checkTrue
     (
-        "g slanted, column 3 full: all 8 of it held",
-        heldRows(support, 3, {0, 1, 2, 3, 4, 5, 6, 7})
-     && countHeld(support, nCells) == 8
+        "g slanted 45, supportAngle 50, column 3 full: all 8 of it held",
+        heldRows(leaning, 3, {0, 1, 2, 3, 4, 5, 6, 7})
+     && countHeld(leaning, nCells) == 8
     );
 
     support.update(Zero, full);
@@ -187,6 +206,22 @@ int main(int argc, char *argv[])
             {"supportPatches", "nowhere", "bottom", "top", "walls"}
         )
     );
+
+    for (const scalar angle : {0.0, 95.0})
+    {
+        dictionary badAngle;
+        badAngle.name() = "coloringFunctionCoeffs";
+        badAngle.add("supportAngle", angle);
+        checkTrue
+        (
+            "supportAngle " + Foam::name(angle) + ": FatalIOError",
+            raisesError
+            (
+                [&]() { PackSupport bad(mesh, badAngle); },
+                {"supportAngle", Foam::name(angle), "(0, 90]"}
+            )
+        );
+    }
 
     return summary();
 }

@@ -8,6 +8,7 @@
 #include "wallPolyPatch.H"
 #include "wordRes.H"
 #include "syncTools.H"
+#include "unitConversion.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -16,9 +17,11 @@ Foam::PackSupport::PackSupport(const fvMesh& mesh, const dictionary& coeffs)
 :
     mesh_(mesh),
     supportPatch_(mesh.boundaryMesh().size(), false),
+    cosSupportAngle_(readCosSupportAngle(coeffs)),
     gHat_(Zero),
     lowerFaces_(),
     lowerWeights_(),
+    lowerSlopes_(),
     bottomUp_(),
     held_()
 {
@@ -76,12 +79,29 @@ void Foam::PackSupport::readSupportPatches(const dictionary& coeffs)
 }
 
 
+Foam::scalar Foam::PackSupport::readCosSupportAngle(const dictionary& coeffs)
+{
+    const scalar angle = coeffs.lookupOrDefault<scalar>("supportAngle", 40);
+
+    if (!(angle > 0 && angle <= 90))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Dictionary " << coeffs.name() << ", keyword supportAngle: "
+            << "value " << angle << " is outside (0, 90] degrees"
+            << exit(FatalIOError);
+    }
+
+    return Foam::cos(degToRad(angle));
+}
+
+
 void Foam::PackSupport::setGeometry(const vector& gHat)
 {
     gHat_ = gHat;
 
     lowerFaces_.setSize(mesh_.nCells());
     lowerWeights_.setSize(mesh_.nCells());
+    lowerSlopes_.setSize(mesh_.nCells());
 
     scalarField height(mesh_.nCells());
 
@@ -89,6 +109,7 @@ void Foam::PackSupport::setGeometry(const vector& gHat)
     {
         DynamicList<label> faces;
         DynamicList<scalar> weights;
+        DynamicList<scalar> slopes;
 
         for (const label facei : mesh_.cells()[celli])
         {
@@ -99,11 +120,13 @@ void Foam::PackSupport::setGeometry(const vector& gHat)
             {
                 faces.append(facei);
                 weights.append(mag(mesh_.faceAreas()[facei])*down);
+                slopes.append(down);
             }
         }
 
         lowerFaces_[celli].transfer(faces);
         lowerWeights_[celli].transfer(weights);
+        lowerSlopes_[celli].transfer(slopes);
         height[celli] = -(mesh_.cellCentres()[celli] & gHat);
     }
 
@@ -149,7 +172,8 @@ bool Foam::PackSupport::restsOnSupport
             support =
                 patches[patchi].coupled()
               ? nbrHeld[facei - nInternal]
-              : supportPatch_[patchi];
+              : supportPatch_[patchi]
+             && lowerSlopes_[celli][i] >= cosSupportAngle_;
         }
 
         if (support)
