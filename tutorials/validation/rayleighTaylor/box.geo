@@ -4,8 +4,11 @@
 //     gmsh -3 -format msh2 -o bed.msh bed.geo
 width    = 0.10;    // x [m]
 height   = 0.60;    // y [m]
-depth    = 0.0025;  // z [m], one cell
-cellSize = 0.0025;  // edge of the cubic cells [m]
+// edge of the cubic cells [m]; gmsh -setnumber cellSize <value> overrides
+DefineConstant[ cellSize = {0.0025, Name "Parameters/cellSize"} ];
+// z [m]: 0 (default) for one cell (a slice), or the seed's 0.1
+DefineConstant[ boxDepth = {0, Name "Parameters/boxDepth"} ];
+depth = (boxDepth > 0) ? boxDepth : cellSize;
 
 nx = Round(width/cellSize);
 ny = Round(height/cellSize);
