@@ -27,6 +27,8 @@ Against:
 Usage:
     minimumFluidizationResults.py [--case DIR] [--label L] [--plot]
         [--check] [--row] [--tableHead]
+    minimumFluidizationResults.py --overlay CASE:LABEL ... [--out PNG]
+        [--title T]   (several runs on one plot: the sensitivity plots)
 """
 import argparse
 import math
@@ -238,6 +240,41 @@ def plot(res, case, label):
     print("  wrote " + path)
 
 
+def plot_overlay(runs, path, title):
+    """The smoothed curves of several runs (case, label) on one plot, with
+    the Ergun line of the first run's bed: the sensitivity plots."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    top = 0
+    for case, label in runs:
+        res = summary(case)
+        b = res["bed"]
+        top = max(top, b["rampVelocity"])
+        text = label
+        if "umf" in res:
+            text += ": Umf %.3f, plateau %.2f" % (res["umf"], res["plateau"])
+        ax.plot([U for U, _ in res["points"]], [p for _, p in res["points"]],
+                lw=1.3, label=text)
+    b = summary(runs[0][0])["bed"]
+    Us = [0.005*i for i in range(1, int(top/0.005) + 1)]
+    ax.plot(Us, [ergun_star(b, U) for U in Us], "k--", lw=1,
+            label="Ergun, voidage %.2f" % (1 - b["alpha"]))
+    ax.axhline(1, color="k", lw=0.8)
+    ax.axvline(MEASURED_UMF, color="tab:red", lw=0.8, ls="-.",
+               label="measured Umf 0.182 m/s")
+    ax.set_xlim(0, top)
+    ax.set_ylim(0, 1.6)
+    ax.set_xlabel("inlet (superficial) gas velocity U [m/s]")
+    ax.set_ylabel("dP* = deltaP/(m g/A), mean over 0.05 m/s")
+    ax.set_title(title, fontsize=10)
+    ax.legend(fontsize=8, loc="lower right")
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    print("  wrote " + path)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--case", default=".")
@@ -245,7 +282,15 @@ def main():
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--row", action="store_true")
     parser.add_argument("--tableHead", action="store_true")
+    parser.add_argument("--overlay", nargs="+", metavar="CASE:LABEL",
+                        help="plot these runs' curves on one plot (--out)")
+    parser.add_argument("--out", default="minimumFluidization_overlay.png")
+    parser.add_argument("--title", default="minimum fluidization")
     args = parser.parse_args()
+    if args.overlay:
+        runs = [tuple(item.split(":", 1)) for item in args.overlay]
+        plot_overlay(runs, args.out, args.title)
+        return 0
     if args.tableHead:
         print(TABLE_HEAD)
         return 0
