@@ -72,6 +72,12 @@ Usage
                                1/interpolate(A), with H and the explicit
                                forces interpolated alongside, instead of
                                MPPICFoam's interpolate(1/A), interpolate(H/A) | off
+        gasVelocityFromFlux  | cell gas velocity after the pressure corrector
+                               reconstructed from the face fluxes (the
+                               face-momentum form of OpenFOAM's two-fluid
+                               solvers) instead of HbyA plus the
+                               reconstructed face pressure gradients;
+                               meant with faceInterpolatedDrag on | off
     \endtable
     With it on, a face between a packed cell and the freeboard or a
     fixed-velocity inflow carries the drag of its half cells: a fixed bed
@@ -81,7 +87,11 @@ Usage
     and 0.51 of it off. A bubbling bed (uniformFluidization) carried less of
     its weight with it on (0.949 against 0.978, docs/VALIDATION.md), so it
     is off by default. No MFiX equivalent (MFiX solves its momentum on a
-    staggered grid).
+    staggered grid). gasVelocityFromFlux (with faceInterpolatedDrag) removes
+    the layering MPPICFoam's form gives a bubbling bed (rows alternating
+    between close pack and 0.42, the packed rows' gas velocity a fifth of
+    the one continuity asks), but that bed then leans on the packing model
+    for 9 % of its weight (docs/VALIDATION.md): off by default.
 
 \*---------------------------------------------------------------------------*/
 
