@@ -15,7 +15,8 @@
 #   U = 0.12 m/s: (2998.8 + 327.3)/5230.9 = 0.6359
 # each within 10 %, from the mean of dP* over +-0.005 m/s of U. (The gas
 # pressure misses about half a cell of the bed's gradient at each end of
-# the bed, README: 1/20 here; measured 1.006 and 0.956 x Ergun.)
+# the bed, README: 1/20 here; measured 1.004 and 0.942 x Ergun, the
+# second a mean over 0.115-0.12 m/s.)
 #------------------------------------------------------------------------------
 runDir="${1:?usage: minimumFluidization.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
