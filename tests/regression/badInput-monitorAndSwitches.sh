@@ -3,7 +3,9 @@
 # does not exist, one with closePackFraction 1.5, and coloringFunction with
 # case1a maybe -> FatalIOError naming the keyword (and the range), exit
 # status 1, no crash (mppicPimpleFoam); likewise capacityLimit perhaps and
-# solidsFractionFrom maybe (the message lists cell and averaging).
+# solidsFractionFrom maybe (the message lists cell and averaging); the
+# solver's PIMPLE switches faceInterpolatedDrag maybe and gasVelocityFromFlux
+# perhaps.
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
 prepareCase "$runDir/case"
@@ -41,5 +43,17 @@ setEntry "$case" constant/kinematicCloudProperties solidsFractionFrom maybe
 runBroken "$case" mppicPimpleFoam
 check fatal "$case/log.broken" $rc "solidsFractionFrom" "maybe" "cell" "averaging" \
     || status=1
+
+foamDictionary "$case/constant/kinematicCloudProperties" \
+    -entry solidsFractionFrom -remove > /dev/null
+setEntry "$case" system/fvSolution PIMPLE/faceInterpolatedDrag maybe
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "faceInterpolatedDrag" "maybe" || status=1
+
+foamDictionary "$case/system/fvSolution" \
+    -entry PIMPLE/faceInterpolatedDrag -remove > /dev/null
+setEntry "$case" system/fvSolution PIMPLE/gasVelocityFromFlux perhaps
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "gasVelocityFromFlux" "perhaps" || status=1
 
 exit $status
