@@ -105,6 +105,7 @@ Usage
 #include "solidsFractionDeposition.H"
 #include "prescribedGasFlow.H"
 #include "reconstructFlux.H"
+#include "newCloudOrExit.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "SolidsSubCycle.H"
+#include "CloudSourceSum.H"
 #include "boundedCoefficient.H"
 #include "subCycleTime.H"
 #include "boundBox.H"
@@ -52,11 +53,9 @@ Foam::tmp<Foam::vectorField> Foam::SolidsSubCycle<CloudType>::cellExtents
 template<class CloudType>
 void Foam::SolidsSubCycle<CloudType>::evolveSubCycles(const label nSubCycles)
 {
-    const fvMesh& mesh = cloud_.mesh();
-    Time& runTime = const_cast<Time&>(mesh.time());
+    Time& runTime = const_cast<Time&>(cloud_.mesh().time());
 
-    vectorField momentum(mesh.nCells(), Zero);
-    scalarField coefficient(mesh.nCells(), Zero);
+    CloudSourceSum sources;
 
     for
     (
@@ -66,12 +65,10 @@ void Foam::SolidsSubCycle<CloudType>::evolveSubCycles(const label nSubCycles)
     )
     {
         cloud_.evolve();
-        momentum += cloud_.UTrans().field();
-        coefficient += cloud_.UCoeff().field();
+        sources.add(cloud_);
     }
 
-    cloud_.UTrans().field() = momentum;
-    cloud_.UCoeff().field() = coefficient;
+    sources.store(cloud_);
 }
 
 

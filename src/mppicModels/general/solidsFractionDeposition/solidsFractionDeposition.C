@@ -41,57 +41,11 @@ Foam::solidsFractionDeposition::readMethod(const dictionary& dict)
 
 Foam::solidsFractionDeposition::solidsFractionDeposition
 (
-    const basicKinematicMPPICCloud& cloud
+    const dictionary& cloudProperties
 )
 :
-    cloud_(cloud),
-    method_(readMethod(cloud.particleProperties()))
+    method_(readMethod(cloudProperties))
 {}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::tmp<Foam::scalarField>
-Foam::solidsFractionDeposition::cellFraction() const
-{
-    if (method_ == method::cell)
-    {
-        return tmp<scalarField>::New(cloud_.theta()().primitiveField());
-    }
-
-    const fvMesh& mesh = cloud_.mesh();
-
-    autoPtr<AveragingMethod<scalar>> deposit
-    (
-        AveragingMethod<scalar>::New
-        (
-            IOobject
-            (
-                cloud_.name() + ":solidsFractionDeposition",
-                mesh.time().timeName(),
-                mesh,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            cloud_.solution().dict(),
-            mesh
-        )
-    );
-
-    for (const basicKinematicMPPICCloud::parcelType& p : cloud_)
-    {
-        deposit->add
-        (
-            p.coordinates(),
-            p.currentTetIndices(),
-            p.nParticle()*p.volume()
-        );
-    }
-    deposit->average();
-
-    return tmp<scalarField>::New(deposit->primitiveField());
-}
 
 
 // ************************************************************************* //

@@ -1,0 +1,153 @@
+/*---------------------------------------------------------------------------*\
+    mppicReactingPimpleFoam: part of the mppicModels project,
+    GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Application
+    mppicReactingPimpleFoam
+
+Group
+    grpLagrangianSolvers
+
+Description
+    Transient PIMPLE solver for a compressible, multi-species, laminar gas
+    carrying one MPPIC parcel cloud that exchanges momentum, heat and mass
+    with it (libmppicModels' basicReactingMPPICCloud: OpenFOAM's reacting
+    parcels, with its heat-transfer, composition and phase-change models,
+    over MPPIC parcels, with the packing, damping, isotropy, drag and
+    averaging models of OpenFOAM and libmppicModels).
+
+    The gas fraction ag = max(1 - theta, 1 - alphaMax) of the cloud's
+    solids fraction theta enters every gas equation:
+        d(ag rho)/dt + div(ag phi)                      = S_rho
+        d(ag rho U)/dt + div(ag phi U) - div(ag tau)    = -grad(p) + rho g
+                                                           + F_cloud
+        d(ag rho Yi)/dt + div(ag phi Yi)
+            - div(ag kappa/Cp grad(Yi))                 = S_Yi
+        d(ag rho h)/dt + div(ag phi h) + d(ag rho K)/dt + div(ag phi K)
+            - ag dp/dt - div(ag kappa/Cp grad(h))       = ag rho U.g + S_h
+    with phi the interstitial mass flux, h the sensible enthalpy, K the
+    kinetic energy, tau the laminar stress of the mixture's viscosity, the
+    species diffusivity rho D = kappa/Cp (unit Lewis number) and rho from
+    the thermo (rhoReactionThermo, psi p). The momentum equation has the
+    form of mppicPimpleFoam and MPPICFoam (full pressure gradient and
+    gravity, the cloud's implicit drag in the matrix, its explicit part
+    with gravity as face fluxes); S_rho, S_Yi, S_h and F_cloud are the
+    cloud's Srho, SYi, Sh and SU.
+
+    What it shares with mppicPimpleFoam is written once: the cloud's
+    gas fraction (mppicCommon/createCloudGasFraction.H,
+    updateCloudGasFraction.H), the split of its momentum source
+    (cloudMomentumSource.H), the construction of the cloud
+    (newCloudOrExit.H), the solids sub-cycling (libmppicModels'
+    SolidsSubCycle, which sums the momentum, enthalpy and species sources
+    over the sub-steps: CloudSourceSum) and the solids deposition
+    (solidsFractionDeposition). Cell velocities come from face fluxes by
+    libmppicModels' reconstructFlux (see mppicPimpleFoam).
+
+Usage
+    mppicReactingPimpleFoam [-cloud <name>] [-parallel]
+    Reads constant/thermophysicalProperties (rhoReactionThermo with
+    energy sensibleEnthalpy; inertSpecie; liquids and solids for
+    SLGThermo), constant/<cloud>Properties (default cloud name
+    reactingCloud; OpenFOAM's reacting-cloud dictionary with the MPPIC
+    submodels and constantProperties/alphaMax; libmppicModels'
+    solidsFractionFrom and solidsSubCycling), constant/g, 0/U, 0/p, 0/T,
+    0/<specie> and system/fvSolution PIMPLE. Writes U, p, T, the species,
+    rho, alpha.gas (gas fraction) and alpha.<cloud> (solids fraction).
+    \table
+        Entry        | Meaning                               | Default
+        inertSpecie  | specie set to one minus the others      | required
+        -cloud       | name of the cloud                       | reactingCloud
+    \endtable
+    The gas is laminar; an inertSpecie that is not one of the species, or
+    an energy other than sensibleEnthalpy, stops with a FatalIOError.
+    packingMonitor is not run for this cloud type.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "rhoReactionThermo.H"
+#include "SLGThermo.H"
+#include "pimpleControl.H"
+#include "basicReactingMPPICCloud.H"
+#include "SolidsSubCycle.H"
+#include "solidsFractionDeposition.H"
+#include "reconstructFlux.H"
+#include "newCloudOrExit.H"
+#include "multivariateScheme.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "PIMPLE solver for a compressible multi-species gas coupled to a"
+        " reacting MPPIC parcel cloud (libmppicModels)"
+    );
+    argList::addOption
+    (
+        "cloud",
+        "name",
+        "name of the cloud (default: reactingCloud)"
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createControl.H"
+    #include "createTimeControls.H"
+    #include "createFields.H"
+    #include "initContinuityErrs.H"
+
+    #include "compressibleCourantNo.H"
+    #include "setInitialDeltaT.H"
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+        #include "compressibleCourantNo.H"
+        #include "setDeltaT.H"
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        #include "evolveCloud.H"
+
+        if (pimple.nCorrPIMPLE() <= 1)
+        {
+            #include "rhoEqn.H"
+        }
+
+        while (pimple.loop())
+        {
+            #include "UEqn.H"
+            #include "YEqn.H"
+            #include "EEqn.H"
+
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+        }
+
+        rho = thermo.rho();
+
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //
