@@ -12,6 +12,7 @@ Usage:
     checks.py fatal <log> <rc> <text> [<text> ...]
     checks.py subCycles <log> <responseTime> <factor>
     checks.py subCyclesCFL <case> <log> <CFL> <cellHeight>
+    checks.py balance <case> <specie> <relTol> <minTransferred>
 """
 import math
 import os
@@ -165,11 +166,39 @@ def sub_cycles_cfl(case, log, cfl, height):
     report(checked >= 5, "%d write times checked (at least 5)" % checked)
 
 
+def balance(case, specie, rel_tol, min_transferred):
+    """reactingCloudBalance of a closed case: the total mass of the specie
+    (gas + cloud) and the total enthalpy stay at their first values to
+    rel_tol relative, while the gas gained at least min_transferred of the
+    specie's total (so that something was exchanged)."""
+    path = os.path.join(case, "postProcessing", "balance", "0",
+                        "reactingCloudBalance.dat")
+    header, rows = None, []
+    for line in open(path):
+        if line.startswith("#"):
+            header = line[1:].split()
+        elif line.strip():
+            rows.append([float(v) for v in line.split()])
+    col = {name: i for i, name in enumerate(header)}
+    rel_tol, min_transferred = float(rel_tol), float(min_transferred)
+    for name in ("total:" + specie, "totalEnthalpy"):
+        first = rows[0][col[name]]
+        worst = max(abs(r[col[name]] - first) for r in rows)/abs(first)
+        report(worst <= rel_tol, "%s constant to %.3g relative over %d steps "
+               "(t %g to %g; tolerance %g)"
+               % (name, worst, len(rows), rows[0][0], rows[-1][0], rel_tol))
+    gas = "gas:" + specie
+    gained = (rows[-1][col[gas]] - rows[0][col[gas]])/rows[0][col["total:" + specie]]
+    report(gained >= min_transferred, "the gas gained %.4g of the %s "
+           "(at least %g)" % (gained, specie, min_transferred))
+
+
 def main(argv):
     cmd, args = argv[1], argv[2:]
     {"parity": parity, "serialParallel": serial_parallel,
      "cloudMass": cloud_mass, "fatal": fatal,
-     "subCycles": sub_cycles, "subCyclesCFL": sub_cycles_cfl}[cmd](*args)
+     "subCycles": sub_cycles, "subCyclesCFL": sub_cycles_cfl,
+     "balance": balance}[cmd](*args)
     return 1 if failures else 0
 
 

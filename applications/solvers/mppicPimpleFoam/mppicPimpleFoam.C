@@ -106,6 +106,7 @@ Usage
 #include "prescribedGasFlow.H"
 #include "reconstructFlux.H"
 #include "newCloudOrExit.H"
+#include "cloudInputChecks.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -74,6 +74,7 @@ Usage
 #include "solidsFractionDeposition.H"
 #include "reconstructFlux.H"
 #include "newCloudOrExit.H"
+#include "cloudInputChecks.H"
 #include "multivariateScheme.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

@@ -1,0 +1,52 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# badInput-reacting <runDir>: mppicReactingPimpleFoam on the closed wet-bulb
+# case (tutorials/verification/wetBulb) with one entry broken at a time ->
+# FatalIOError naming the keyword (and the value), non-zero exit, no crash:
+#   thermophysicalProperties: inertSpecie missing; inertSpecie N2 (not a
+#   specie); liquids { H2X; } (not in OpenFOAM's liquid database);
+#   reactingCloudProperties: singlePhaseMixtureCoeffs/phases missing;
+#   injection nParticle -25 (statistical weight, range (0, inf)).
+#------------------------------------------------------------------------------
+runDir="${1:?usage: badInput-reacting.sh <runDir>}"
+. "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
+status=0
+
+copyTutorial verification/wetBulb "$runDir/prepared"
+runAllrun "$runDir/prepared" -closed -endTime 0.002 || exit 1
+rm -rf "$runDir"/prepared/0.0*
+
+breakAndRun()   # name dict entry value(-remove for none) texts...
+{
+    local name="$1" dict="$2" entry="$3" value="$4"
+    shift 4
+    local dir="$runDir/$name"
+    rm -rf "$dir"
+    cp -r "$runDir/prepared" "$dir"
+    if [ "$value" = -remove ]
+    then
+        foamDictionary "$dir/constant/$dict" -entry "$entry" -remove > /dev/null
+    else
+        foamDictionary "$dir/constant/$dict" -entry "$entry" -set "$value" \
+            > /dev/null
+    fi
+    (cd "$dir" && mppicReactingPimpleFoam > log.broken 2>&1)
+    local rc=$?
+    echo "== $name"
+    check fatal "$dir/log.broken" $rc "$@" || status=1
+}
+
+breakAndRun inertSpecieMissing thermophysicalProperties inertSpecie -remove \
+    "inertSpecie" "thermophysicalProperties"
+breakAndRun inertSpecieUnknown thermophysicalProperties inertSpecie N2 \
+    "inertSpecie" "N2"
+breakAndRun liquidUnknown thermophysicalProperties liquids "{ H2X; }" \
+    "liquids" "H2X"
+breakAndRun phasesMissing reactingCloudProperties \
+    subModels/singlePhaseMixtureCoeffs/phases -remove \
+    "phases" "singlePhaseMixtureCoeffs"
+breakAndRun negativeWeight reactingCloudProperties \
+    subModels/injectionModels/droplet/nParticle -25 \
+    "nParticle" "-25" "(0, inf)"
+
+exit $status
