@@ -12,7 +12,10 @@
 #   water to the gas. (Started at 303.15 K the droplets cool by 17 K in
 #   0.5 s and the enthalpy moves by 2.3e-8: OpenFOAM's droplet step takes
 #   Cp at the start of each track sub-step, an error of Cp' dT^2/2 per
-#   sub-step that halves with the sub-step; tutorial README.)
+#   sub-step, in proportion to the sub-step; tutorial README.)
+# - the same closed case for 1 s with solids sub-cycling (10 sub-steps per
+#   gas step, response-time limited): the enthalpy and species sources summed
+#   over the sub-steps (CloudSourceSum), water and enthalpy again to 1e-10.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: wetBulb.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -28,5 +31,17 @@ setEntry "$runDir/closed" constant/reactingCloudProperties \
     constantProperties/T0 283.45
 runAllrun "$runDir/closed" -closed -endTime 3 || exit 1
 check balance "$runDir/closed" H2O 1e-10 0.03 || status=1
+
+copyTutorial verification/wetBulb "$runDir/subCycled"
+setEntry "$runDir/subCycled" constant/reactingCloudProperties \
+    constantProperties/T0 283.45
+setEntry "$runDir/subCycled" constant/reactingCloudProperties \
+    solidsSubCycling "{ active true; CFL 0.1; relaxationTimeFactor 10; }"
+runAllrun "$runDir/subCycled" -closed -endTime 1 || exit 1
+grep -q "Solids sub-cycling: 10 sub-step(s)" \
+    "$runDir/subCycled/log.mppicReactingPimpleFoam" \
+    && echo "PASS 10 solids sub-steps per gas step" \
+    || { echo "FAIL not 10 solids sub-steps per gas step"; status=1; }
+check balance "$runDir/subCycled" H2O 1e-10 0.01 || status=1
 
 exit $status
