@@ -38,7 +38,8 @@ Description
     gas fraction (mppicCommon/createCloudGasFraction.H,
     updateCloudGasFraction.H), the split of its momentum source
     (cloudMomentumSource.H), the construction of the cloud
-    (newCloudOrExit.H), the solids sub-cycling (libmppicModels'
+    (newCloudOrExit.H), the packing monitor (createPackingMonitor.H), the
+    solids sub-cycling (libmppicModels'
     SolidsSubCycle, which sums the momentum, enthalpy and species sources
     over the sub-steps: CloudSourceSum) and the solids deposition
     (solidsFractionDeposition). Cell velocities come from face fluxes by
@@ -60,8 +61,10 @@ Usage
         -cloud       | name of the cloud                       | reactingCloud
     \endtable
     The gas is laminar; an inertSpecie that is not one of the species, or
-    an energy other than sensibleEnthalpy, stops with a FatalIOError.
-    packingMonitor is not run for this cloud type.
+    an energy other than sensibleEnthalpy, stops with a FatalIOError. As
+    mppicPimpleFoam, it runs libmppicModels' packingMonitor when the cloud
+    has a packing model ("packingMonitor off;" in system/controlDict turns
+    it off).
 
 \*---------------------------------------------------------------------------*/
 
@@ -70,6 +73,7 @@ Usage
 #include "SLGThermo.H"
 #include "pimpleControl.H"
 #include "basicReactingMPPICCloud.H"
+#include "packingMonitor.H"
 #include "SolidsSubCycle.H"
 #include "solidsFractionDeposition.H"
 #include "reconstructFlux.H"
@@ -102,6 +106,7 @@ int main(int argc, char *argv[])
     #include "createControl.H"
     #include "createTimeControls.H"
     #include "createFields.H"
+    #include "createPackingMonitor.H"
     #include "initContinuityErrs.H"
 
     #include "compressibleCourantNo.H"
@@ -139,6 +144,11 @@ int main(int argc, char *argv[])
         }
 
         rho = thermo.rho();
+
+        if (packingMonitorPtr.valid())
+        {
+            packingMonitorPtr->write();
+        }
 
         runTime.write();
 

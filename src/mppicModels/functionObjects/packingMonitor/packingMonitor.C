@@ -9,6 +9,7 @@
 #include "wallPolyPatch.H"
 #include "boundedCoefficient.H"
 #include "addToRunTimeSelectionTable.H"
+#include "packingMonitorTemplates.C"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -39,7 +40,7 @@ Foam::scalar Foam::functionObjects::packingMonitor::readClosePackFraction
 
     // From the cloud's packing model
     const dictionary& subModels =
-        cloud().particleProperties().subDict("subModels");
+        cloudProperties().subDict("subModels");
 
     const word model(subModels.get<word>("packingModel"));
     const dictionary& coeffs = subModels.subOrEmptyDict(model + "Coeffs");
@@ -67,25 +68,24 @@ Foam::scalar Foam::functionObjects::packingMonitor::readClosePackFraction
 }
 
 
-const Foam::basicKinematicMPPICCloud&
-Foam::functionObjects::packingMonitor::cloud() const
+const Foam::dictionary&
+Foam::functionObjects::packingMonitor::cloudProperties() const
 {
-    // Looked up through its abstract base: the cloud's own typeName is
-    // ambiguous (kinematicCloud and Cloud both declare one)
-    const basicKinematicMPPICCloud* cloudPtr =
-        dynamic_cast<const basicKinematicMPPICCloud*>
-        (
-            &lookupObject<kinematicCloud>(cloudName_)
-        );
-
-    if (!cloudPtr)
+    if (const basicKinematicMPPICCloud* c = cloudAs<basicKinematicMPPICCloud>())
     {
-        FatalErrorInFunction
-            << "Cloud " << cloudName_ << " is not a basicKinematicMPPICCloud"
-            << exit(FatalError);
+        return c->particleProperties();
+    }
+    if (const basicReactingMPPICCloud* c = cloudAs<basicReactingMPPICCloud>())
+    {
+        return c->particleProperties();
     }
 
-    return *cloudPtr;
+    FatalErrorInFunction
+        << "Cloud " << cloudName_ << " is not an MPPIC cloud"
+        << " (basicKinematicMPPICCloud, basicReactingMPPICCloud)"
+        << exit(FatalError);
+
+    return dictionary::null;
 }
 
 
@@ -107,61 +107,13 @@ void Foam::functionObjects::packingMonitor::markWallCells()
 }
 
 
-Foam::scalar
-Foam::functionObjects::packingMonitor::maxAveragedSolidsFraction
-(
-    const basicKinematicMPPICCloud& cloud
-) const
-{
-    autoPtr<AveragingMethod<scalar>> average
-    (
-        AveragingMethod<scalar>::New
-        (
-            IOobject
-            (
-                cloudName_ + ":packingMonitorAverage",
-                time_.timeName(),
-                mesh_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            cloud.solution().dict(),
-            mesh_
-        )
-    );
-
-    for (const basicKinematicMPPICCloud::parcelType& p : cloud)
-    {
-        average->add
-        (
-            p.coordinates(),
-            p.currentTetIndices(),
-            p.nParticle()*p.volume()
-        );
-    }
-    average->average();
-
-    scalar maxAlpha = 0;
-    for (const Field<scalar>& values : average())
-    {
-        for (const scalar alpha : values)
-        {
-            maxAlpha = max(maxAlpha, alpha);
-        }
-    }
-
-    return returnReduce(maxAlpha, maxOp<scalar>());
-}
-
-
 void Foam::functionObjects::packingMonitor::writeFileHeader(Ostream& os)
 {
     writeHeader(os, "Packing monitor of cloud " + cloudName_);
     writeHeaderValue(os, "closePackFraction", closePackFraction_);
     writeHeaderValue(os, "averagingMethod", word
     (
-        cloud().solution().dict().get<word>("averagingMethod")
+        cloudProperties().subDict("solution").get<word>("averagingMethod")
     ));
     writeCommented(os, "Time");
     for
@@ -219,16 +171,16 @@ bool Foam::functionObjects::packingMonitor::read(const dictionary& dict)
     if
     (
         !foundObject<kinematicCloud>(cloudName_)
-     || !dynamic_cast<const basicKinematicMPPICCloud*>
-        (
-            &lookupObject<kinematicCloud>(cloudName_)
+     || (
+            !cloudAs<basicKinematicMPPICCloud>()
+         && !cloudAs<basicReactingMPPICCloud>()
         )
     )
     {
         FatalIOErrorInFunction(dict)
             << "Dictionary " << dict.name() << ", keyword cloud: no MPPIC"
-            << " cloud (basicKinematicMPPICCloud) named " << cloudName_
-            << exit(FatalIOError);
+            << " cloud (basicKinematicMPPICCloud, basicReactingMPPICCloud)"
+            << " named " << cloudName_ << exit(FatalIOError);
     }
 
     closePackFraction_ = readClosePackFraction(dict);
@@ -240,82 +192,11 @@ bool Foam::functionObjects::packingMonitor::read(const dictionary& dict)
 Foam::functionObjects::packingMonitor::sample
 Foam::functionObjects::packingMonitor::evaluate() const
 {
-    const basicKinematicMPPICCloud& cloud = this->cloud();
-
-    const scalar deltaT = time_.deltaTValue();
-    const scalarField& V = mesh_.V();
-
-    sample s;
-    scalarField solidsVolume(mesh_.nCells(), Zero);
-
-    for (const basicKinematicMPPICCloud::parcelType& p : cloud)
+    if (const basicKinematicMPPICCloud* c = cloudAs<basicKinematicMPPICCloud>())
     {
-        const label celli = p.cell();
-        const scalar m = p.nParticle()*p.mass();
-        const vector momentum = m*p.UCorrect();
-
-        ++s.nParcels;
-        s.mass += m;
-        solidsVolume[celli] += p.nParticle()*p.volume();
-        s.packingMomentum += momentum;
-
-        if (wallCells_[celli])
-        {
-            s.wallPackingMomentum += momentum;
-        }
-        if (mag(p.U())*deltaT > cbrt(V[celli]))
-        {
-            ++s.nFastParcels;
-        }
+        return evaluate(*c);
     }
-
-    const scalarField alphaCell(solidsVolume/V);
-    forAll(alphaCell, celli)
-    {
-        s.maxAlphaCell = max(s.maxAlphaCell, alphaCell[celli]);
-        if (alphaCell[celli] > closePackFraction_)
-        {
-            ++s.nCellsAboveClosePack;
-        }
-    }
-
-    // Our packing models record the velocity change they gave, which can
-    // differ from UCorrect (a move back out of a full cell is a
-    // displacement, not a velocity: ColoringFunction)
-    typedef PackingModels::MfixPackingModel
-    <
-        basicKinematicMPPICCloud::MPPICCloudType
-    > mfixModel;
-
-    const mfixModel* ours =
-        dynamic_cast<const mfixModel*>(&cloud.packingModel());
-
-    if (ours && ours->cellAddedMomentum().size() == mesh_.nCells())
-    {
-        s.packingMomentum = Zero;
-        s.wallPackingMomentum = Zero;
-        forAll(wallCells_, celli)
-        {
-            const vector& momentum = ours->cellAddedMomentum()[celli];
-            s.packingMomentum += momentum;
-            if (wallCells_[celli])
-            {
-                s.wallPackingMomentum += momentum;
-            }
-        }
-    }
-
-    reduce(s.nParcels, sumOp<label>());
-    reduce(s.mass, sumOp<scalar>());
-    reduce(s.maxAlphaCell, maxOp<scalar>());
-    reduce(s.nCellsAboveClosePack, sumOp<label>());
-    reduce(s.nFastParcels, sumOp<label>());
-    reduce(s.packingMomentum, sumOp<vector>());
-    reduce(s.wallPackingMomentum, sumOp<vector>());
-
-    s.maxAlphaAveraged = maxAveragedSolidsFraction(cloud);
-
-    return s;
+    return evaluate(*cloudAs<basicReactingMPPICCloud>());
 }
 
 

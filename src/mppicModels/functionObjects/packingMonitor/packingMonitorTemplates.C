@@ -1,0 +1,154 @@
+/*---------------------------------------------------------------------------*\
+    mppicModels: MFiX-PIC dense-particle models for OpenFOAM
+    This file is part of the mppicModels project, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "packingMonitor.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+const CloudType* Foam::functionObjects::packingMonitor::cloudAs() const
+{
+    // Looked up through its abstract base: the cloud's own typeName is
+    // ambiguous (kinematicCloud and Cloud both declare one)
+    return dynamic_cast<const CloudType*>
+    (
+        &lookupObject<kinematicCloud>(cloudName_)
+    );
+}
+
+
+template<class CloudType>
+Foam::scalar
+Foam::functionObjects::packingMonitor::maxAveragedSolidsFraction
+(
+    const CloudType& cloud
+) const
+{
+    autoPtr<AveragingMethod<scalar>> average
+    (
+        AveragingMethod<scalar>::New
+        (
+            IOobject
+            (
+                cloudName_ + ":packingMonitorAverage",
+                time_.timeName(),
+                mesh_,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            cloud.solution().dict(),
+            mesh_
+        )
+    );
+
+    for (const typename CloudType::parcelType& p : cloud)
+    {
+        average->add
+        (
+            p.coordinates(),
+            p.currentTetIndices(),
+            p.nParticle()*p.volume()
+        );
+    }
+    average->average();
+
+    scalar maxAlpha = 0;
+    for (const Field<scalar>& values : average())
+    {
+        for (const scalar alpha : values)
+        {
+            maxAlpha = max(maxAlpha, alpha);
+        }
+    }
+
+    return returnReduce(maxAlpha, maxOp<scalar>());
+}
+
+
+template<class CloudType>
+Foam::functionObjects::packingMonitor::sample
+Foam::functionObjects::packingMonitor::evaluate(const CloudType& cloud) const
+{
+
+    const scalar deltaT = time_.deltaTValue();
+    const scalarField& V = mesh_.V();
+
+    sample s;
+    scalarField solidsVolume(mesh_.nCells(), Zero);
+
+    for (const typename CloudType::parcelType& p : cloud)
+    {
+        const label celli = p.cell();
+        const scalar m = p.nParticle()*p.mass();
+        const vector momentum = m*p.UCorrect();
+
+        ++s.nParcels;
+        s.mass += m;
+        solidsVolume[celli] += p.nParticle()*p.volume();
+        s.packingMomentum += momentum;
+
+        if (wallCells_[celli])
+        {
+            s.wallPackingMomentum += momentum;
+        }
+        if (mag(p.U())*deltaT > cbrt(V[celli]))
+        {
+            ++s.nFastParcels;
+        }
+    }
+
+    const scalarField alphaCell(solidsVolume/V);
+    forAll(alphaCell, celli)
+    {
+        s.maxAlphaCell = max(s.maxAlphaCell, alphaCell[celli]);
+        if (alphaCell[celli] > closePackFraction_)
+        {
+            ++s.nCellsAboveClosePack;
+        }
+    }
+
+    // Our packing models record the velocity change they gave, which can
+    // differ from UCorrect (a move back out of a full cell is a
+    // displacement, not a velocity: ColoringFunction)
+    typedef PackingModels::MfixPackingModel
+    <
+        typename CloudType::MPPICCloudType
+    > mfixModel;
+
+    const mfixModel* ours =
+        dynamic_cast<const mfixModel*>(&cloud.packingModel());
+
+    if (ours && ours->cellAddedMomentum().size() == mesh_.nCells())
+    {
+        s.packingMomentum = Zero;
+        s.wallPackingMomentum = Zero;
+        forAll(wallCells_, celli)
+        {
+            const vector& momentum = ours->cellAddedMomentum()[celli];
+            s.packingMomentum += momentum;
+            if (wallCells_[celli])
+            {
+                s.wallPackingMomentum += momentum;
+            }
+        }
+    }
+
+    reduce(s.nParcels, sumOp<label>());
+    reduce(s.mass, sumOp<scalar>());
+    reduce(s.maxAlphaCell, maxOp<scalar>());
+    reduce(s.nCellsAboveClosePack, sumOp<label>());
+    reduce(s.nFastParcels, sumOp<label>());
+    reduce(s.packingMomentum, sumOp<vector>());
+    reduce(s.wallPackingMomentum, sumOp<vector>());
+
+    s.maxAlphaAveraged = maxAveragedSolidsFraction(cloud);
+
+    return s;
+}
+
+
+
+// ************************************************************************* //
