@@ -104,7 +104,8 @@ def solver_log(case):
 
 
 def wall_time(case):
-    """(simulated time, clock time) at the end of the solver log."""
+    """(simulated time, clock time) of the solver log: the time simulated
+    since the log's start time (a restart), and the clock time of its end."""
     path = solver_log(case)
     if not path:
         return None, None
@@ -113,7 +114,10 @@ def wall_time(case):
     clocks = re.findall(r"ClockTime = (\S+) s", text)
     if not times or not clocks:
         return None, None
-    return float(times[-1]), float(clocks[-1])
+    # the first step's time minus its step: the start time of the log
+    deltas = re.findall(r"^deltaT = (\S+)", text, re.M)
+    start = max(float(times[0]) - (float(deltas[0]) if deltas else 0.0), 0.0)
+    return float(times[-1]) - start, float(clocks[-1])
 
 
 def injected(case):
