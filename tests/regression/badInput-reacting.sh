@@ -6,7 +6,8 @@
 #   thermophysicalProperties: inertSpecie missing; inertSpecie N2 (not a
 #   specie); liquids { H2X; } (not in OpenFOAM's liquid database);
 #   reactingCloudProperties: singlePhaseMixtureCoeffs/phases missing;
-#   injection nParticle -25 (statistical weight, range (0, inf)).
+#   injection nParticle -25 (statistical weight, range (0, inf));
+#   system/controlDict: reactingCloudBalance species (H2X), cloud noCloud.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: badInput-reacting.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -48,5 +49,10 @@ breakAndRun phasesMissing reactingCloudProperties \
 breakAndRun negativeWeight reactingCloudProperties \
     subModels/injectionModels/droplet/nParticle -25 \
     "nParticle" "-25" "(0, inf)"
+
+breakAndRun balanceSpecies ../system/controlDict functions/balance/species \
+    "(H2X)" "species" "H2X"
+breakAndRun balanceCloud ../system/controlDict functions/balance/cloud \
+    noCloud "keyword cloud" "noCloud"
 
 exit $status
