@@ -15,17 +15,10 @@ namespace Foam
     defineTypeNameAndDebug(linearHatKernel, 0);
 }
 
+#include "linearHatKernelBlock.H"
+
 namespace
 {
-    //- Block entries and faces per cell
-    const Foam::label blockSize = 27;
-    const Foam::label facesPerCell = 6;
-
-    //- Index of the cell itself in its block, and the stride of a step
-    //  along each direction
-    const Foam::label blockCentre = 13;
-    const Foam::label blockStride[3] = {9, 3, 1};
-
     //- Smallest cosine between a face normal and a step direction
     const Foam::scalar minStepCos = 0.5;
 }
@@ -195,6 +188,7 @@ void Foam::linearHatKernel::addHexCell
 
 void Foam::linearHatKernel::addOtherCell(const label celli)
 {
+    hexahedral_[celli] = false;
     for (label entry = 0; entry < blockSize; ++entry)
     {
         block_[blockSize*celli + entry] = celli;
@@ -212,7 +206,8 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
 :
     MeshObject<fvMesh, GeometricMeshObject, linearHatKernel>(mesh),
     block_(blockSize*mesh.nCells()),
-    towardFace_(facesPerCell*mesh.nCells())
+    towardFace_(facesPerCell*mesh.nCells()),
+    hexahedral_(mesh.nCells(), true)
 {
     // Cell-to-cell vectors across the cyclic patches
     List<vectorField> patchDeltas(mesh.boundary().size());

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "MfixSnider.H"
+#include "zeroGradientFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -15,8 +16,18 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
 )
 :
     MfixPackingModel<CloudType>(dict, owner, typeName),
-    rules_(this->coeffs())
-{}
+    rules_(this->coeffs()),
+    collisionDamping_
+    (
+        this->coeffs().template lookupOrDefault<bool>("collisionDamping", false)
+    ),
+    stressGradient_(owner.mesh()),
+    cellAlpha_(),
+    damping_(rules_.e1(), rules_.closePackFraction()),
+    previousMeanVelocity_(nullptr)
+{
+    meanVelocity();
+}
 
 
 template<class CloudType>
@@ -26,11 +37,120 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
 )
 :
     MfixPackingModel<CloudType>(cm),
-    rules_(cm.rules_)
+    rules_(cm.rules_),
+    collisionDamping_(cm.collisionDamping_),
+    stressGradient_(cm.owner().mesh()),
+    cellAlpha_(),
+    damping_(rules_.e1(), rules_.closePackFraction()),
+    previousMeanVelocity_(nullptr)
 {}
 
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::volVectorField&
+Foam::PackingModels::MfixSnider<CloudType>::meanVelocity()
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const word name(meanVelocityName(this->owner().name()));
+
+    volVectorField* fieldPtr = mesh.getObjectPtr<volVectorField>(name);
+    if (!fieldPtr)
+    {
+        // Read on a restart; else zero, the mean of parcels at rest
+        fieldPtr = new volVectorField
+        (
+            IOobject
+            (
+                name,
+                mesh.time().timeName(),
+                mesh,
+                IOobject::READ_IF_PRESENT,
+                IOobject::AUTO_WRITE
+            ),
+            mesh,
+            dimensionedVector(dimVelocity, Zero),
+            zeroGradientFvPatchVectorField::typeName
+        );
+        fieldPtr->store();
+
+        if (fieldPtr->headerOk())
+        {
+            Info<< "mfixSnider: mean solids velocity of the previous step "
+                << "read from " << fieldPtr->objectPath() << endl;
+        }
+    }
+    return *fieldPtr;
+}
+
+
+template<class CloudType>
+void Foam::PackingModels::MfixSnider<CloudType>::storeMeanVelocity()
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const linearHatKernel& kernel = linearHatKernel::New(mesh);
+
+    scalarField massDensity(mesh.nCells(), Zero);
+    vectorField momentumDensity(mesh.nCells(), Zero);
+
+    for (const typename CloudType::parcelType& p : this->owner())
+    {
+        const scalar m = p.nParticle()*p.mass();
+        const point position(p.position());
+        kernel.deposit(massDensity, position, p.cell(), m);
+        kernel.deposit(momentumDensity, position, p.cell(), m*p.U());
+    }
+
+    volVectorField& Us = meanVelocity();
+    vectorField& UsCells = Us.primitiveFieldRef();
+    forAll(UsCells, celli)
+    {
+        UsCells[celli] =
+            massDensity[celli] > 0
+          ? momentumDensity[celli]/massDensity[celli]
+          : Zero;
+    }
+    Us.correctBoundaryConditions();
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::PackingModels::MfixSnider<CloudType>::cacheFields(const bool store)
+{
+    MfixPackingModel<CloudType>::cacheFields(store);
+
+    if (!store)
+    {
+        storeMeanVelocity();
+        previousMeanVelocity_ = nullptr;
+        stressGradient_.clear();
+        cellAlpha_.clear();
+        damping_.clear();
+        return;
+    }
+
+    const tmp<scalarField> talpha(this->volumeAverage().primitiveField());
+    const scalarField& alpha = talpha();
+
+    cellAlpha_.setSize(alpha.size());
+    scalarField stress(alpha.size());
+    forAll(alpha, celli)
+    {
+        cellAlpha_[celli] = rules_.cappedFraction(alpha[celli]);
+        stress[celli] = rules_.tau(alpha[celli]);
+    }
+    stressGradient_.update(stress);
+    previousMeanVelocity_ = &meanVelocity().primitiveField();
+
+    if (collisionDamping_)
+    {
+        damping_.update(this->owner(), cellAlpha_);
+    }
+}
+
 
 template<class CloudType>
 Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
@@ -39,14 +159,25 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
     const scalar deltaT
 ) const
 {
-    const vector tauGrad = this->packingGradAt(p);
+    const label celli = p.cell();
+
+    const vector tauGrad = stressGradient_.at(p.position(), celli);
 
     const vector dU =
-        rules_.impulseVelocity(tauGrad, p.rho(), this->alphaAt(p), deltaT);
+        rules_.impulseVelocity(tauGrad, p.rho(), cellAlpha_[celli], deltaT);
 
-    const vector correction =
-        rules_.correctedVelocity(p.U(), this->uMeanAt(p), dU, tauGrad)
-      - p.U();
+    vector Unew =
+        rules_.correctedVelocity
+        (
+            p.U(), (*previousMeanVelocity_)[celli], dU, tauGrad
+        );
+
+    if (collisionDamping_)
+    {
+        Unew = damping_.damped(Unew, celli, deltaT);
+    }
+
+    const vector correction = Unew - p.U();
 
     this->recordVelocityChange(p, correction);
     return correction;

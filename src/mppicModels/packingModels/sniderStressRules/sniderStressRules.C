@@ -60,12 +60,17 @@ Foam::sniderStressRules::sniderStressRules(const dictionary& coeffs)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::sniderStressRules::cappedFraction(const scalar alpha) const
+{
+    return min(max(alpha, scalar(0)), min(0.995, 1.15*closePackFraction_));
+}
+
+
 Foam::scalar Foam::sniderStressRules::tau(const scalar alpha) const
 {
     // Capped as in MFiX, so that the denominator stays positive when an
     // averaged solids fraction overshoots
-    const scalar alphaCapped =
-        min(max(alpha, scalar(0)), min(0.995, 1.15*closePackFraction_));
+    const scalar alphaCapped = cappedFraction(alpha);
 
     return
         pSolid_*pow(alphaCapped, gamma_)

@@ -1,0 +1,327 @@
+/*---------------------------------------------------------------------------*\
+    mppicModels unit tests
+-------------------------------------------------------------------------------
+Application
+    Test-mfixSnider
+
+Description
+    mfixSnider's rules as MFiX-PIC applies them, on the unit box (4 x 8 x 1
+    cells of 0.25 x 0.25 x 0.1 m; cell (column i, row j) has label
+    i + 4*j and centre (0.125 + 0.25 i, 0.125 + 0.25 j, 0.05); walls all
+    round, a plain patch at the top). Hand values:
+
+    1. Stress gradient (linearHatKernel::extrapolatedGradient), cell values
+       v = 3 + 2x - 5y: exactly (2, -5, 0) everywhere, in the half cells
+       next to the walls and the top patch too (ghosts 2 v_c - v_opp);
+       v = y^2: between the centres y = 0.125 and 0.375, and below 0.125
+       (ghost), d/dy = (0.375^2 - 0.125^2)/0.25 = 0.5.
+
+    2. The limiter with the previous step's mean solids velocity. Basic
+       (cell) averaging, close pack 0.6, Ps 100, gamma 3, eps 1e-7, e1 0.85,
+       dt 1e-3, rho_p 2500, d 0.01 (V_p = pi 1e-6/6):
+       row 0 packed at rest (one parcel per cell at the centre, alpha 0.62,
+       mean velocity 0), row 1 at alpha 0.3 falling at 1 m/s (mean velocity
+       (0 -1 0)), rows 2-7 empty:
+         tau(0.62) = 100*0.62^3/(1e-7*0.38) = 6.27179e8 Pa,
+         tau(0.30) = 100*0.3^3/0.3 = 9 Pa.
+       A parcel of the falling block that has just entered the packed cell,
+       at (0.125, 0.2, 0.05), U = (0 -1 0): grad_y = (9 - tau0)/0.25, the
+       impulse is far beyond the reflection, so U'_y = U_y + (1 + e1)*(0 -
+       U_y) = 0.85: turned in one step. With the mean of this step's own
+       velocities (-1, what OpenFOAM's uAverage holds), the slip is 0 and
+       nothing happens.
+       A parcel of row 1 at (0.125, 0.45, 0.05), U = (0 -2 0): grad_y =
+       (0 - 9)/0.25 = -36 Pa/m (row 2 empty), dU_y = 1e-3*36/(2500*0.3) =
+       4.8e-5 m/s, below the reflection (1.85 m/s): U'_y = -2 + 4.8e-5.
+       The stress at the cap: tau(0.9) = tau(min(0.995, 0.69)) =
+       100*0.69^3/(1e-7*0.31) = 1.05971e9 Pa.
+
+    3. The mean solids velocity stored for the next step (cacheFields
+       false): mass-weighted linear-hat deposit to the centres. Cell 0 holds
+       its resting parcel (mass m0, at the centre) and 0.7 of the entering
+       parcel (t = 0.3 toward row 1), now at U_y = 0.85:
+         Us_y(cell 0) = 0.7 m_f 0.85/(m0 + 0.7 m_f),
+         Us_y(cell 4) = (-m1 + 0.3 m_f 0.85)/(m1 + 0.3 m_f).
+
+    4. Collision damping (MFiX 21 form): two parcels of r = 0.005 in a cell
+       of capped alpha 0.3, U_x = 1 and 3: mean 2, sigma_x = sqrt(1)/(2-1)
+       = 1, r32 = r/3, g0 = 0.6/0.3 = 2,
+         1/tau_x = 16/sqrt(3 pi) 0.3 * 1/(r/3) * 2 * (1 - 0.85^2)/4,
+       U_x = 1 after dt 1e-3: (1 + r*2)/(1 + r), r = dt/(2 tau_x).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "basicKinematicMPPICCloud.H"
+#include "linearHatKernel.H"
+#include "mfixCollisionDamping.H"
+#include "sniderStressRules.H"
+#include "unitTest.H"
+
+using namespace Foam;
+using namespace Foam::unitTest;
+
+typedef basicKinematicMPPICCloud cloudType;
+typedef cloudType::parcelType parcelType;
+
+const scalar piValue = constant::mathematical::pi;
+
+// * * * * * * * * * * * * * * * * Test groups * * * * * * * * * * * * * * //
+
+void testGradient(const fvMesh& mesh)
+{
+    const linearHatKernel& kernel = linearHatKernel::New(mesh);
+    const vectorField& C = mesh.C();
+
+    scalarField linear(mesh.nCells());
+    scalarField quadratic(mesh.nCells());
+    forAll(C, celli)
+    {
+        linear[celli] = 3 + 2*C[celli].x() - 5*C[celli].y();
+        quadratic[celli] = sqr(C[celli].y());
+    }
+
+    const List<Tuple2<point, word>> points
+    ({
+        {point(0.4, 0.9, 0.05), "interior"},
+        {point(0.05, 1.1, 0.05), "next to the side wall"},
+        {point(0.02, 0.03, 0.01), "in a wall corner"},
+        {point(0.6, 1.97, 0.08), "next to the top patch"}
+    });
+    for (const Tuple2<point, word>& pt : points)
+    {
+        const vector g =
+            kernel.extrapolatedGradient
+            (
+                linear, pt.first(), mesh.findCell(pt.first())
+            );
+        const string what("linear field, " + pt.second() + ": ");
+        checkClose(what + "d/dx", g.x(), 2, 1e-12);
+        checkClose(what + "d/dy", g.y(), -5, 1e-12);
+        checkClose(what + "d/dz", g.z(), 0, 1e-12, 1);
+    }
+
+    const scalar bracket = (sqr(0.375) - sqr(0.125))/0.25;
+    for (const scalar y : {0.3, 0.2, 0.05})
+    {
+        const point pt(0.3, y, 0.05);
+        const vector g =
+            kernel.extrapolatedGradient(quadratic, pt, mesh.findCell(pt));
+        checkClose
+        (
+            "y^2 at y = " + Foam::name(y) + ": bracketing centres",
+            g.y(), bracket, 1e-12
+        );
+    }
+}
+
+
+parcelType* newParcel
+(
+    const fvMesh& mesh,
+    const point& position,
+    const vector& U,
+    const scalar nParticle
+)
+{
+    parcelType* p = new parcelType(mesh, position, mesh.findCell(position));
+    p->d() = 0.01;
+    p->rho() = 2500;
+    p->U() = U;
+    p->nParticle() = nParticle;
+    return p;
+}
+
+
+void testLimiterAndMean(cloudType& cloud, const fvMesh& mesh)
+{
+    const scalar Vp = piValue*1e-6/6;
+    const scalar Vcell = 0.25*0.25*0.1;
+    const scalar n0 = 0.62*Vcell/Vp;
+    const scalar n1 = 0.3*Vcell/Vp;
+    const scalar nf = 1;
+    const scalar dt = 1e-3;
+
+    // Row 0 at rest, row 1 falling; the entering parcel and the row-1
+    // parcel under test are the first two
+    parcelType* entering =
+        newParcel(mesh, point(0.125, 0.2, 0.05), vector(0, -1, 0), nf);
+    parcelType* rowOne =
+        newParcel(mesh, point(0.125, 0.45, 0.05), vector(0, -2, 0), 0);
+    cloud.addParticle(entering);
+    cloud.addParticle(rowOne);
+    for (label i = 0; i < 4; ++i)
+    {
+        const scalar x = 0.125 + 0.25*i;
+        cloud.addParticle(newParcel(mesh, point(x, 0.125, 0.05), Zero, n0));
+        cloud.addParticle
+        (
+            newParcel(mesh, point(x, 0.375, 0.05), vector(0, -1, 0), n1)
+        );
+    }
+
+    dictionary subModels;
+    subModels.add("packingModel", "mfixSnider");
+    dictionary coeffs;
+    coeffs.add("closePackFraction", 0.6);
+    coeffs.add("pSolid", 100);
+    coeffs.add("gamma", 3);
+    coeffs.add("eps", 1e-7);
+    coeffs.add("e1", 0.85);
+    coeffs.add("slipVelocityFactor", 1);
+    subModels.add("mfixSniderCoeffs", coeffs);
+
+    autoPtr<PackingModel<cloudType>> model
+    (
+        PackingModel<cloudType>::New(subModels, cloud)
+    );
+
+    // The previous step's mean: row 0 at rest, row 1 falling
+    volVectorField& Us =
+        mesh.lookupObjectRef<volVectorField>("kinematicCloud:UMean");
+    checkClose("UMean starts at zero (no file)", mag(Us[0]), 0, 1e-12, 1);
+    for (label i = 0; i < 4; ++i)
+    {
+        Us[4 + i] = vector(0, -1, 0);
+    }
+
+    parcelType::trackingData td(cloud);
+    td.updateAverages(cloud);
+    model->cacheFields(true);
+
+    const scalar m0 = n0*entering->mass();
+    const scalar m1 = n1*entering->mass();
+    const scalar mf = nf*entering->mass();
+    Info<< "cell 0 solids fraction (basic): "
+        << (n0 + nf)*Vp/Vcell << endl;
+
+    const vector dEntering = model->velocityCorrection(*entering, dt);
+    checkClose
+    (
+        "entering parcel turned in one step: U'_y", 
+        entering->U().y() + dEntering.y(), 0.85, 1e-12
+    );
+    checkClose("entering parcel: no x change", dEntering.x(), 0, 1e-12, 1);
+
+    const vector dRowOne = model->velocityCorrection(*rowOne, dt);
+    checkClose
+    (
+        "row-1 parcel: impulse dt*36/(2500*0.3)", dRowOne.y(),
+        dt*36/(2500*0.3), 1e-9
+    );
+
+    // The mean of this step's own velocities leaves the block alone
+    Us[0] = vector(0, -1, 0);
+    const vector dSameStep = model->velocityCorrection(*entering, dt);
+    checkClose
+    (
+        "with this step's mean (-1): no correction", dSameStep.y(), 0,
+        1e-12, 1
+    );
+    Us[0] = Zero;
+
+    // End of the step: the stored mean from the final velocities
+    entering->U() = vector(0, 0.85, 0);
+    model->cacheFields(false);
+    checkClose
+    (
+        "stored mean, cell 0",
+        Us[0].y(), 0.7*mf*0.85/(m0 + 0.7*mf), 1e-10
+    );
+    checkClose
+    (
+        "stored mean, cell 4",
+        Us[4].y(), (-m1 + 0.3*mf*0.85)/(m1 + 0.3*mf), 1e-10
+    );
+    checkClose("stored mean, empty cell 12", mag(Us[12]), 0, 1e-12, 1);
+
+    dictionary rules(coeffs);
+    checkClose
+    (
+        "stress at the cap, tau(0.9)", sniderStressRules(rules).tau(0.9),
+        100*pow3(0.69)/(1e-7*0.31), 1e-12
+    );
+    checkClose
+    (
+        "stress below close pack, tau(0.3)",
+        sniderStressRules(rules).tau(0.3), 9, 1e-12
+    );
+}
+
+
+void testDamping(cloudType& cloud, const fvMesh& mesh)
+{
+    cloud.clear();
+    const point centre(0.625, 1.125, 0.05);
+    cloud.addParticle(newParcel(mesh, centre, vector(1, 0, 0), 1));
+    cloud.addParticle(newParcel(mesh, centre, vector(3, 0, 0), 1));
+    const label celli = mesh.findCell(centre);
+
+    mfixCollisionDamping damping(0.85, 0.6);
+    damping.update(cloud, scalarField(mesh.nCells(), 0.3));
+
+    const scalar r = 0.005;
+    const scalar oneByTau =
+        16/Foam::sqrt(scalar(3*piValue))*0.3*1/(r/3)*2*(1 - sqr(0.85))/4;
+    checkClose("damping 1/tau_x", damping.oneByTau()[celli].x(), oneByTau, 1e-12);
+    checkClose("damping 1/tau_y (no spread)", damping.oneByTau()[celli].y(), 0, 1e-12, 1);
+    checkClose("damping: cell mean", damping.meanVelocity()[celli].x(), 2, 1e-12);
+
+    const scalar dt = 1e-3;
+    const scalar ratio = 0.5*dt*oneByTau;
+    checkClose
+    (
+        "damped U_x", damping.damped(vector(1, 0, 0), celli, dt).x(),
+        (1 + ratio*2)/(1 + ratio), 1e-12
+    );
+    checkClose
+    (
+        "a cell with one parcel is not damped",
+        damping.oneByTau()[0].x(), 0, 1e-12, 1
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * * * Main  * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::noParallel();
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "readGravitationalAcceleration.H"
+
+    auto uniformField = [&](const word& name, const dimensionSet& dims, const scalar v)
+    {
+        return volScalarField
+        (
+            IOobject(name, runTime.timeName(), mesh),
+            mesh,
+            dimensionedScalar(name, dims, v)
+        );
+    };
+
+    volScalarField rho(uniformField("rho.air", dimDensity, 1.2));
+    volScalarField mu(uniformField("mu.air", dimDynamicViscosity, 1.8e-5));
+    volScalarField alpha(uniformField("alpha.air", dimless, 1));
+    volVectorField U
+    (
+        IOobject("U.air", runTime.timeName(), mesh),
+        mesh,
+        dimensionedVector(dimVelocity, Zero)
+    );
+
+    basicKinematicMPPICCloud cloud("kinematicCloud", rho, U, mu, g);
+
+    testGradient(mesh);
+    testLimiterAndMean(cloud, mesh);
+    testDamping(cloud, mesh);
+
+    Info<< nl << (nFailed() ? "FAILED " : "passed ") << nFailed()
+        << " failure(s)" << endl;
+    return nFailed();
+}
+
+
+// ************************************************************************* //
