@@ -43,7 +43,13 @@ Description
          Us_y(cell 0) = 0.7 m_f 0.85/(m0 + 0.7 m_f),
          Us_y(cell 4) = (-m1 + 0.3 m_f 0.85)/(m1 + 0.3 m_f).
 
-    4. Collision damping (MFiX 21 form): two parcels of r = 0.005 in a cell
+    4. Mean-free-path cap (MFiX 18.1), close pack 0.6: it applies above
+       alpha_s = 1 - 0.95*0.4 = 0.62. In a cell at 0.65, r = 0.005, dt 1e-3:
+       l = 3.7*0.005/(3 sqrt(2)*0.65) = 6.7084e-3 m; U = (0 10 0) up the
+       gradient (0 1 0) travels 0.01 > l: U' = 10 l/0.01; down the gradient
+       or at alpha 0.6, or with the cap off: unchanged.
+
+    5. Collision damping (MFiX 21 form): two parcels of r = 0.005 in a cell
        of capped alpha 0.3, U_x = 1 and 3: mean 2, sigma_x = sqrt(1)/(2-1)
        = 1, r32 = r/3, g0 = 0.6/0.3 = 2,
          1/tau_x = 16/sqrt(3 pi) 0.3 * 1/(r/3) * 2 * (1 - 0.85^2)/4,
@@ -249,6 +255,45 @@ void testLimiterAndMean(cloudType& cloud, const fvMesh& mesh)
 }
 
 
+void testMeanFreePathCap()
+{
+    dictionary coeffs;
+    coeffs.add("closePackFraction", 0.6);
+    coeffs.add("meanFreePathCap", true);
+    const sniderStressRules capped(coeffs);
+    coeffs.set("meanFreePathCap", false);
+    const sniderStressRules uncapped(coeffs);
+
+    const scalar l = 3.7*0.005/(3*Foam::sqrt(2.0)*0.65);
+    const vector up(0, 10, 0);
+    const vector grad(0, 1, 0);
+    checkClose
+    (
+        "mean-free-path cap: up the gradient in a packed cell",
+        capped.meanFreePathCapped(up, grad, 0.65, 0.005, 1e-3).y(),
+        10*l/0.01, 1e-12
+    );
+    checkClose
+    (
+        "mean-free-path cap: down the gradient, unchanged",
+        capped.meanFreePathCapped(-up, grad, 0.65, 0.005, 1e-3).y(),
+        -10, 1e-12
+    );
+    checkClose
+    (
+        "mean-free-path cap: below 0.62, unchanged",
+        capped.meanFreePathCapped(up, grad, 0.6, 0.005, 1e-3).y(),
+        10, 1e-12
+    );
+    checkClose
+    (
+        "mean-free-path cap off: unchanged",
+        uncapped.meanFreePathCapped(up, grad, 0.65, 0.005, 1e-3).y(),
+        10, 1e-12
+    );
+}
+
+
 void testDamping(cloudType& cloud, const fvMesh& mesh)
 {
     cloud.clear();
@@ -316,6 +361,7 @@ int main(int argc, char *argv[])
 
     testGradient(mesh);
     testLimiterAndMean(cloud, mesh);
+    testMeanFreePathCap();
     testDamping(cloud, mesh);
 
     Info<< nl << (nFailed() ? "FAILED " : "passed ") << nFailed()

@@ -6,6 +6,41 @@
 #include "MfixSnider.H"
 #include "zeroGradientFvPatchFields.H"
 
+// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::wordList
+Foam::PackingModels::MfixSnider<CloudType>::keywords
+({
+    "closePackFraction", "pSolid", "gamma", "eps", "e1",
+    "slipVelocityFactor", "meanFreePathCap", "collisionDamping"
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::dictionary&
+Foam::PackingModels::MfixSnider<CloudType>::checkedCoeffs
+(
+    const dictionary& coeffs
+)
+{
+    for (const entry& e : coeffs)
+    {
+        if (!keywords.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Unknown keyword " << e.keyword() << " in "
+                << coeffs.name() << nl
+                << "mfixSnider reads " << keywords
+                << exit(FatalIOError);
+        }
+    }
+    return coeffs;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -16,7 +51,7 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
 )
 :
     MfixPackingModel<CloudType>(dict, owner, typeName),
-    rules_(this->coeffs()),
+    rules_(checkedCoeffs(this->coeffs())),
     collisionDamping_
     (
         this->coeffs().template lookupOrDefault<bool>("collisionDamping", false)
@@ -45,8 +80,6 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
     previousMeanVelocity_(nullptr)
 {}
 
-
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
 Foam::volVectorField&
@@ -170,6 +203,12 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
         rules_.correctedVelocity
         (
             p.U(), (*previousMeanVelocity_)[celli], dU, tauGrad
+        );
+
+    Unew =
+        rules_.meanFreePathCapped
+        (
+            Unew, tauGrad, cellAlpha_[celli], 0.5*p.d(), deltaT
         );
 
     if (collisionDamping_)

@@ -54,7 +54,8 @@ Foam::sniderStressRules::sniderStressRules(const dictionary& coeffs)
             1,
             mppicCoefficients::bounds::closed(0, 1)
         )
-    )
+    ),
+    meanFreePathCap_(coeffs.lookupOrDefault<bool>("meanFreePathCap", false))
 {}
 
 
@@ -122,6 +123,31 @@ Foam::vector Foam::sniderStressRules::correctedVelocity
     }
 
     return Unew;
+}
+
+
+Foam::vector Foam::sniderStressRules::meanFreePathCapped
+(
+    const vector& U,
+    const vector& tauGrad,
+    const scalar alpha,
+    const scalar radius,
+    const scalar deltaT
+) const
+{
+    const scalar packedAlpha = 1 - 0.95*(1 - closePackFraction_);
+    if (!meanFreePathCap_ || alpha <= packedAlpha || (U & tauGrad) <= 0)
+    {
+        return U;
+    }
+
+    const scalar meanFreePath = 3.7*radius/(3*sqrt(2.0)*alpha);
+    const scalar travel = mag(U)*deltaT;
+    if (travel <= meanFreePath)
+    {
+        return U;
+    }
+    return U*(meanFreePath/travel);
 }
 
 

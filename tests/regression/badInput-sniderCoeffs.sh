@@ -1,0 +1,30 @@
+#!/bin/bash
+# badInput-sniderCoeffs <runDir>: mfixSnider with pSolid -1, gamma -1,
+# slipVelocityFactor 1.5, collisionDamping maybe, meanFreePathCap perhaps
+# and a misspelt keyword (colisionDamping) -> FatalIOError naming the
+# keyword and the value (or the allowed range or keywords), exit status 1,
+# no crash (mppicPimpleFoam).
+. "${0%/*}/badInputFunctions"
+runDir="${1:?}"
+prepareCase "$runDir/case"
+case="$runDir/case"
+status=0
+setEntry "$case" constant/kinematicCloudProperties \
+    subModels/packingModel mfixSnider
+
+tryCoeffs()
+{
+    setEntry "$case" constant/kinematicCloudProperties \
+        subModels/mfixSniderCoeffs "{ closePackFraction 0.6; $1 }"
+    runBroken "$case" mppicPimpleFoam
+    shift
+    check fatal "$case/log.broken" $rc "$@" || status=1
+}
+
+tryCoeffs "pSolid -1;" "pSolid" "-1" "[0,"
+tryCoeffs "gamma -1;" "gamma" "-1" "[0,"
+tryCoeffs "slipVelocityFactor 1.5;" "slipVelocityFactor" "1.5" "[0, 1]"
+tryCoeffs "collisionDamping maybe;" "collisionDamping" "maybe"
+tryCoeffs "meanFreePathCap perhaps;" "meanFreePathCap" "perhaps"
+tryCoeffs "colisionDamping true;" "colisionDamping" "collisionDamping"
+exit $status
