@@ -13,7 +13,8 @@ const Foam::wordList
 Foam::PackingModels::MfixSnider<CloudType>::keywords
 ({
     "closePackFraction", "pSolid", "gamma", "eps", "e1",
-    "slipVelocityFactor", "meanFreePathCap", "collisionDamping"
+    "slipVelocityFactor", "capFactor", "meanFreePathCap",
+    "collisionDamping"
 });
 
 

@@ -55,6 +55,13 @@ Foam::sniderStressRules::sniderStressRules(const dictionary& coeffs)
             mppicCoefficients::bounds::closed(0, 1)
         )
     ),
+    capFactor_
+    (
+        mppicCoefficients::read
+        (
+            coeffs, "capFactor", 1.15, mppicCoefficients::bounds::atLeast(1)
+        )
+    ),
     meanFreePathCap_(coeffs.lookupOrDefault<bool>("meanFreePathCap", false))
 {}
 
@@ -63,7 +70,7 @@ Foam::sniderStressRules::sniderStressRules(const dictionary& coeffs)
 
 Foam::scalar Foam::sniderStressRules::cappedFraction(const scalar alpha) const
 {
-    return min(max(alpha, scalar(0)), min(0.995, 1.15*closePackFraction_));
+    return min(max(alpha, scalar(0)), min(0.995, capFactor_*closePackFraction_));
 }
 
 
