@@ -30,6 +30,7 @@ Description
 #include "fvCFD.H"
 #include "basicKinematicMPPICCloud.H"
 #include "unitTest.H"
+#include "uniformAirFields.H"
 
 using namespace Foam;
 using namespace Foam::unitTest;
@@ -228,27 +229,11 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "readGravitationalAcceleration.H"
 
-    auto uniformField = [&](const word& name, const dimensionSet& dims, const scalar v)
-    {
-        return volScalarField
-        (
-            IOobject(name, runTime.timeName(), mesh),
-            mesh,
-            dimensionedScalar(name, dims, v)
-        );
-    };
+    uniformAirFields air(mesh, rhog, mug);
+    volScalarField& alpha = air.alpha;
+    volVectorField& U = air.U;
 
-    volScalarField rho(uniformField("rho.air", dimDensity, rhog));
-    volScalarField mu(uniformField("mu.air", dimDynamicViscosity, mug));
-    volScalarField alpha(uniformField("alpha.air", dimless, 1));
-    volVectorField U
-    (
-        IOobject("U.air", runTime.timeName(), mesh),
-        mesh,
-        dimensionedVector(dimVelocity, Zero)
-    );
-
-    basicKinematicMPPICCloud cloud("kinematicCloud", rho, U, mu, g);
+    basicKinematicMPPICCloud cloud("kinematicCloud", air.rho, U, air.mu, g);
 
     const point centre(0.5, 1.0, 0.05);
     parcelType p(mesh, centre, mesh.findCell(centre));

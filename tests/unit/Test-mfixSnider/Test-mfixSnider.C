@@ -63,6 +63,7 @@ Description
 #include "mfixCollisionDamping.H"
 #include "sniderStressRules.H"
 #include "unitTest.H"
+#include "uniformAirFields.H"
 
 using namespace Foam;
 using namespace Foam::unitTest;
@@ -337,27 +338,10 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "readGravitationalAcceleration.H"
 
-    auto uniformField = [&](const word& name, const dimensionSet& dims, const scalar v)
-    {
-        return volScalarField
-        (
-            IOobject(name, runTime.timeName(), mesh),
-            mesh,
-            dimensionedScalar(name, dims, v)
-        );
-    };
+    uniformAirFields air(mesh, 1.2, 1.8e-5);
 
-    volScalarField rho(uniformField("rho.air", dimDensity, 1.2));
-    volScalarField mu(uniformField("mu.air", dimDynamicViscosity, 1.8e-5));
-    volScalarField alpha(uniformField("alpha.air", dimless, 1));
-    volVectorField U
-    (
-        IOobject("U.air", runTime.timeName(), mesh),
-        mesh,
-        dimensionedVector(dimVelocity, Zero)
-    );
 
-    basicKinematicMPPICCloud cloud("kinematicCloud", rho, U, mu, g);
+    basicKinematicMPPICCloud cloud("kinematicCloud", air.rho, air.U, air.mu, g);
 
     testGradient(mesh);
     testLimiterAndMean(cloud, mesh);
