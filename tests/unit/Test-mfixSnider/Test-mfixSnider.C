@@ -340,7 +340,6 @@ int main(int argc, char *argv[])
 
     uniformAirFields air(mesh, 1.2, 1.8e-5);
 
-
     basicKinematicMPPICCloud cloud("kinematicCloud", air.rho, air.U, air.mu, g);
 
     testGradient(mesh);
