@@ -49,7 +49,16 @@ Description
        gradient (0 1 0) travels 0.01 > l: U' = 10 l/0.01; down the gradient
        or at alpha 0.6, or with the cap off: unchanged.
 
-    5. Collision damping (MFiX 21 form): two parcels of r = 0.005 in a cell
+    5. Reflection about rest where the mean converges (restWhereConverging),
+       e1 0.85, slip factor 1, impulse dU_y = 100 (saturated), grad tau =
+       (0 -10 0) (denser below), U = (0 -1 0):
+         mean (0 -0.5 0), moving into the denser solids: option on, about
+         rest: U'_y = -1 + 1.85*(0 + 1) = 0.85; off, about the mean:
+         -1 + 1.85*(-0.5 + 1) = -0.075;
+         mean (0 0.5 0), moving out of them: either way -1 + 1.85*1.5 =
+         1.775.
+
+    6. Collision damping (MFiX 21 form): two parcels of r = 0.005 in a cell
        of capped alpha 0.3, U_x = 1 and 3: mean 2, sigma_x = sqrt(1)/(2-1)
        = 1, r32 = r/3, g0 = 0.6/0.3 = 2,
          1/tau_x = 16/sqrt(3 pi) 0.3 * 1/(r/3) * 2 * (1 - 0.85^2)/4,
@@ -295,6 +304,44 @@ void testMeanFreePathCap()
 }
 
 
+void testRestWhereConverging()
+{
+    dictionary coeffs;
+    coeffs.add("closePackFraction", 0.6);
+    coeffs.add("restWhereConverging", true);
+    const sniderStressRules rest(coeffs);
+    coeffs.set("restWhereConverging", false);
+    const sniderStressRules mean(coeffs);
+
+    const vector U(0, -1, 0);
+    const vector dU(0, 100, 0);
+    const vector grad(0, -10, 0);
+    const vector converging(0, -0.5, 0);
+    const vector diverging(0, 0.5, 0);
+
+    checkClose
+    (
+        "converging mean, about rest",
+        rest.correctedVelocity(U, converging, dU, grad).y(), 0.85, 1e-12
+    );
+    checkClose
+    (
+        "converging mean, option off: about the mean",
+        mean.correctedVelocity(U, converging, dU, grad).y(), -0.075, 1e-12
+    );
+    checkClose
+    (
+        "diverging mean, about the mean either way",
+        rest.correctedVelocity(U, diverging, dU, grad).y(), 1.775, 1e-12
+    );
+    checkClose
+    (
+        "diverging mean, option off",
+        mean.correctedVelocity(U, diverging, dU, grad).y(), 1.775, 1e-12
+    );
+}
+
+
 void testDamping(cloudType& cloud, const fvMesh& mesh)
 {
     cloud.clear();
@@ -345,6 +392,7 @@ int main(int argc, char *argv[])
     testGradient(mesh);
     testLimiterAndMean(cloud, mesh);
     testMeanFreePathCap();
+    testRestWhereConverging();
     testDamping(cloud, mesh);
 
     Info<< nl << (nFailed() ? "FAILED " : "passed ") << nFailed()

@@ -14,7 +14,7 @@ Foam::PackingModels::MfixSnider<CloudType>::keywords
 ({
     "closePackFraction", "pSolid", "gamma", "eps", "e1",
     "slipVelocityFactor", "capFactor", "meanFreePathCap",
-    "collisionDamping"
+    "restWhereConverging", "collisionDamping"
 });
 
 

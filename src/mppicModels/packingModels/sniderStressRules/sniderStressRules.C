@@ -62,7 +62,11 @@ Foam::sniderStressRules::sniderStressRules(const dictionary& coeffs)
             coeffs, "capFactor", 1.15, mppicCoefficients::bounds::atLeast(1)
         )
     ),
-    meanFreePathCap_(coeffs.lookupOrDefault<bool>("meanFreePathCap", false))
+    meanFreePathCap_(coeffs.lookupOrDefault<bool>("meanFreePathCap", false)),
+    restWhereConverging_
+    (
+        coeffs.lookupOrDefault<bool>("restWhereConverging", false)
+    )
 {}
 
 
@@ -111,13 +115,19 @@ Foam::vector Foam::sniderStressRules::correctedVelocity
     const vector& tauGrad
 ) const
 {
-    const vector slip = slipVelocityFactor_*uMean - U;
-
     vector Unew = U;
 
     for (direction k = 0; k < vector::nComponents; ++k)
     {
-        const scalar reflection = (1 + e1_)*slip[k];
+        // The velocity reflected about: the scaled mean, or rest where the
+        // mean itself moves up the stress gradient (into denser solids)
+        const bool converging = uMean[k]*tauGrad[k] > 0;
+        const scalar frame =
+            (restWhereConverging_ && converging)
+          ? 0
+          : slipVelocityFactor_*uMean[k];
+
+        const scalar reflection = (1 + e1_)*(frame - U[k]);
 
         if (tauGrad[k] <= 0)
         {
