@@ -1,19 +1,19 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # restartSnider <runDir>
-# tutorials/validation/uniformFluidization with mfixSnider (and its collision
-# damping) in a prescribed uniform gas flow of 0.8 m/s upward (the gas is not
-# solved, so that only the cloud is tested: a restart of the gas solver is
-# not exact in v1912, issue 20), binary writes at full precision: one run
-# 0 -> 0.05 s, and the
-# same case stopped at 0.025 s and continued from there to 0.05 s. mfixSnider
-# keeps the previous step's mean solids velocity (<cloud>:UMean): it is
-# written with the time directory and read back, so that the two runs give
-# the same parcels. Checks at 0.05 s: parcel count, and every parcel's
-# velocity and position (barycentric coordinates) equal to 1e-12 relative
-# to the largest value; the field kinematicCloud:UMean and the gas velocity
-# likewise. Without the stored mean (the file deleted before the restart)
-# the parcels differ: the check can fail.
+# tutorials/validation/uniformFluidization with mfixSnider as the case sets
+# it (slip factor 0.9, MFiX's collision damping) in a prescribed uniform gas
+# flow of 0.8 m/s upward (the gas is not solved, so that only the cloud is
+# tested: a restart of the gas solver is not exact in v1912, issue 20),
+# binary writes at full precision: one run 0 -> 0.05 s, and the same case
+# stopped at 0.025 s and continued from there to 0.05 s. mfixSnider keeps
+# the previous step's mean solids velocity (<cloud>:UMean): it is written
+# with the time directory and read back, so that the two runs give the same
+# parcels. Checks at 0.05 s: parcel count, and every parcel's velocity and
+# position (barycentric coordinates) equal to 1e-12 relative to the largest
+# value; the fields kinematicCloud:UMean and alpha.air likewise. Without
+# the stored mean (the file deleted before the restart) the parcels differ:
+# the check can fail.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: restartSnider.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -21,8 +21,6 @@ runDir="${1:?usage: restartSnider.sh <runDir>}"
 prepare()
 {
     copyTutorial validation/uniformFluidization "$1"
-    sed -i "s/^\( *slipVelocityFactor .*\)/\1\n        collisionDamping true;/" \
-        "$1/constant/kinematicCloudProperties"
     setEntry "$1" system/controlDict writeFormat binary
     setEntry "$1" system/controlDict writePrecision 17
     cat > "$1/constant/prescribedGasFlowProperties" <<'DICT'
