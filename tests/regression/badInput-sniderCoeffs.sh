@@ -1,7 +1,8 @@
 #!/bin/bash
 # badInput-sniderCoeffs <runDir>: mfixSnider with pSolid -1, gamma -1,
-# slipVelocityFactor 1.5, collisionDamping maybe, meanFreePathCap perhaps
-# and a misspelt keyword (colisionDamping) -> FatalIOError naming the
+# slipVelocityFactor 1.5, capFactor 0.5, collisionDamping maybe,
+# meanFreePathCap perhaps, restWhereConverging sometimes and a misspelt
+# keyword (colisionDamping) -> FatalIOError naming the
 # keyword and the value (or the allowed range or keywords), exit status 1,
 # no crash (mppicPimpleFoam).
 . "${0%/*}/badInputFunctions"
@@ -24,7 +25,9 @@ tryCoeffs()
 tryCoeffs "pSolid -1;" "pSolid" "-1" "[0,"
 tryCoeffs "gamma -1;" "gamma" "-1" "[0,"
 tryCoeffs "slipVelocityFactor 1.5;" "slipVelocityFactor" "1.5" "[0, 1]"
+tryCoeffs "capFactor 0.5;" "capFactor" "0.5" "[1,"
 tryCoeffs "collisionDamping maybe;" "collisionDamping" "maybe"
 tryCoeffs "meanFreePathCap perhaps;" "meanFreePathCap" "perhaps"
+tryCoeffs "restWhereConverging sometimes;" "restWhereConverging" "sometimes"
 tryCoeffs "colisionDamping true;" "colisionDamping" "collisionDamping"
 exit $status

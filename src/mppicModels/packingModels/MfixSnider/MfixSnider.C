@@ -125,15 +125,22 @@ void Foam::PackingModels::MfixSnider<CloudType>::storeMeanVelocity()
     const fvMesh& mesh = this->owner().mesh();
     const linearHatKernel& kernel = linearHatKernel::New(mesh);
 
-    scalarField massDensity(mesh.nCells(), Zero);
-    vectorField momentumDensity(mesh.nCells(), Zero);
+    scalarField mass(mesh.nCells(), Zero);
+    vectorField momentum(mesh.nCells(), Zero);
 
+    // One kernel evaluation per parcel for both sums; the ratio needs no
+    // division by the cell volumes
+    linearHatKernel::weights w;
     for (const typename CloudType::parcelType& p : this->owner())
     {
         const scalar m = p.nParticle()*p.mass();
-        const point position(p.position());
-        kernel.deposit(massDensity, position, p.cell(), m);
-        kernel.deposit(momentumDensity, position, p.cell(), m*p.U());
+        kernel.evaluate(p.position(), p.cell(), w);
+        for (label k = 0; k < 8; ++k)
+        {
+            const scalar mk = w.values[k]*m;
+            mass[w.cells[k]] += mk;
+            momentum[w.cells[k]] += mk*p.U();
+        }
     }
 
     volVectorField& Us = meanVelocity();
@@ -141,8 +148,8 @@ void Foam::PackingModels::MfixSnider<CloudType>::storeMeanVelocity()
     forAll(UsCells, celli)
     {
         UsCells[celli] =
-            massDensity[celli] > 0
-          ? momentumDensity[celli]/massDensity[celli]
+            mass[celli] > 0
+          ? momentum[celli]/mass[celli]
           : Zero;
     }
     Us.correctBoundaryConditions();
