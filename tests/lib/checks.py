@@ -13,6 +13,7 @@ Usage:
     checks.py subCycles <log> <responseTime> <factor>
     checks.py subCyclesCFL <case> <log> <CFL> <cellHeight>
     checks.py balance <case> <specie> <relTol> <minTransferred>
+    checks.py sameState <caseA> <caseB> <time> <relTol> <field> [<field> ...]
 """
 import math
 import os
@@ -193,12 +194,66 @@ def balance(case, specie, rel_tol, min_transferred):
            "(at least %g)" % (gained, specie, min_transferred))
 
 
+def read_rows(path):
+    """Rows of numbers of an ascii field file's list: one row per entry,
+    e.g. (a b c d) i j k of a lagrangian positions file, (x y z) of a
+    vector field, one number of a scalar field; the internal field only of
+    a volume field, one row if it is uniform."""
+    text = open(path).read()
+    body = text[text.index("}", text.index("FoamFile")) + 1:]
+    body = re.sub(r"//.*", "", body)
+    start = body.find("internalField")
+    if start >= 0:
+        body = body[start:body.find("boundaryField")]
+        uniform = re.match(r"internalField\s+uniform\s+\(?([^;)]*)", body)
+        if uniform:
+            return [[float(v) for v in uniform.group(1).split()]]
+    same = re.search(r"(\d+)\s*\{\s*([^}\s]+)\s*\}", body)
+    head = re.search(r"(\d+)\s*\(", body)
+    if same and (not head or same.start() < head.start()):
+        return [[float(same.group(2))]]*int(same.group(1))
+    n = int(head.group(1))
+    lines = body[head.end():].strip().splitlines()
+    number = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+    if lines and lines[0].lstrip().startswith("("):
+        rows = [[float(v) for v in re.findall(number, l)] for l in lines[:n]]
+    else:
+        values = re.findall(number, " ".join(lines).split(")")[0])
+        rows = [[float(v)] for v in values]
+    assert len(rows) == n, path
+    return rows
+
+
+def same_state(a, b, time, tol, *fields):
+    """Field by field, entry by entry: |x_a - x_b| <= relTol*max|column|
+    (each column of a field scaled by its own largest magnitude)."""
+    tol = float(tol)
+    for field in fields:
+        pa, pb = os.path.join(a, time, field), os.path.join(b, time, field)
+        ra, rb = read_rows(pa), read_rows(pb)
+        if len(ra) == 0 or len(ra) != len(rb) \
+                or any(len(x) != len(y) for x, y in zip(ra, rb)):
+            report(False, "%s at t=%s: %d vs %d entries" % (field, time,
+                                                            len(ra), len(rb)))
+            continue
+        worst = 0.0
+        for c in range(len(ra[0])):
+            scale = max(max(abs(r[c]) for r in ra), max(abs(r[c]) for r in rb))
+            if scale == 0:
+                continue
+            worst = max(worst, max(abs(x[c] - y[c]) for x, y in zip(ra, rb))
+                        / scale)
+        report(worst <= tol, "%s at t=%s: %d entries, largest difference %.3g"
+               " of the column's scale <= %g" % (field, time, len(ra), worst,
+                                                 tol))
+
+
 def main(argv):
     cmd, args = argv[1], argv[2:]
     {"parity": parity, "serialParallel": serial_parallel,
      "cloudMass": cloud_mass, "fatal": fatal,
      "subCycles": sub_cycles, "subCyclesCFL": sub_cycles_cfl,
-     "balance": balance}[cmd](*args)
+     "balance": balance, "sameState": same_state}[cmd](*args)
     return 1 if failures else 0
 
 

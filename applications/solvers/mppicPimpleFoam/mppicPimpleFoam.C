@@ -99,7 +99,7 @@ Usage
 #include "singlePhaseTransportModel.H"
 #include "PhaseIncompressibleTurbulenceModel.H"
 #include "pimpleControl.H"
-#include "basicKinematicMPPICCloud.H"
+#include "leanKinematicMPPICCloud.H"
 #include "packingMonitor.H"
 #include "SolidsSubCycle.H"
 #include "solidsFractionDeposition.H"

@@ -72,7 +72,7 @@ Usage
 #include "rhoReactionThermo.H"
 #include "SLGThermo.H"
 #include "pimpleControl.H"
-#include "basicReactingMPPICCloud.H"
+#include "leanReactingMPPICCloud.H"
 #include "packingMonitor.H"
 #include "SolidsSubCycle.H"
 #include "solidsFractionDeposition.H"
