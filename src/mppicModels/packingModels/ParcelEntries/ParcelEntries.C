@@ -61,6 +61,47 @@ Foam::label Foam::ParcelEntries<CloudType>::crossedFace
 }
 
 
+template<class CloudType>
+Foam::label Foam::ParcelEntries<CloudType>::findRecord
+(
+    const labelPair& key,
+    label& next,
+    HashTable<label, labelPair, labelPair::Hash<>>& unmatched,
+    bool& searched
+) const
+{
+    // The common case: the next record is this parcel's
+    if (next < lastCells_.size() && lastCells_[next].key == key)
+    {
+        return next++;
+    }
+
+    // A parcel left before this one, or this one is new here, or came back
+    // from another processor: search the records not yet passed
+    if (!searched)
+    {
+        for (label recordi = next; recordi < lastCells_.size(); ++recordi)
+        {
+            unmatched.set(lastCells_[recordi].key, recordi);
+        }
+        searched = true;
+    }
+
+    const auto iter = unmatched.cfind(key);
+    if (!iter.found())
+    {
+        return -1;
+    }
+    const label recordi = iter.val();
+    unmatched.erase(key);
+    if (recordi >= next)
+    {
+        next = recordi + 1;
+    }
+    return recordi;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -82,9 +123,12 @@ void Foam::ParcelEntries<CloudType>::update
     // Entrants of each cell
     List<DynamicList<entrant>> entrants(mesh.nCells());
 
-    // Recorded parcels not seen here any more left for another processor
-    HashTable<Tuple2<label, scalar>, labelPair, labelPair::Hash<>>
-        departed(lastCells_);
+    // Records matched by a parcel here; the others left (for another
+    // processor, or through an outlet)
+    boolList matched(lastCells_.size(), false);
+    label next = 0;
+    HashTable<label, labelPair, labelPair::Hash<>> unmatched;
+    bool searched = false;
 
     for (const parcelType& p : cloud)
     {
@@ -101,12 +145,14 @@ void Foam::ParcelEntries<CloudType>::update
         vector direction = Zero;
         scalar depth = 0;
 
-        const labelPair key(p.origProc(), p.origId());
-        const auto last = lastCells_.cfind(key);
-        if (last.found())
+        const label recordi = findRecord
+        (
+            labelPair(p.origProc(), p.origId()), next, unmatched, searched
+        );
+        if (recordi >= 0)
         {
-            departed.erase(key);
-            from = (*last).first();
+            matched[recordi] = true;
+            from = lastCells_[recordi].cell;
             if (from == celli)
             {
                 startVolume[celli] += volume;
@@ -146,9 +192,12 @@ void Foam::ParcelEntries<CloudType>::update
         }
     }
 
-    forAllConstIters(departed, iter)
+    forAll(lastCells_, recordi)
     {
-        startVolume[iter.val().first()] += iter.val().second();
+        if (!matched[recordi])
+        {
+            startVolume[lastCells_[recordi].cell] += lastCells_[recordi].volume;
+        }
     }
 
     startFraction_ = startVolume/mesh.V();
@@ -232,14 +281,18 @@ template<class CloudType>
 void Foam::ParcelEntries<CloudType>::recordCells(const CloudType& cloud)
 {
     lastCells_.clear();
-    lastCells_.resize(2*cloud.size());
+    lastCells_.setCapacity(cloud.size());
 
     for (const parcelType& p : cloud)
     {
-        lastCells_.set
+        lastCells_.append
         (
-            labelPair(p.origProc(), p.origId()),
-            Tuple2<label, scalar>(p.cell(), p.nParticle()*p.volume())
+            record
+            {
+                labelPair(p.origProc(), p.origId()),
+                p.cell(),
+                p.nParticle()*p.volume()
+            }
         );
     }
 }
