@@ -28,10 +28,13 @@ Description
     Prints, per processor, the cells, the parcels and the weight.
 
 Usage
-    mppicDecomposeByParcels [-positions <file>]
+    mppicDecomposeByParcels [-positions <file>] [-report]
 
     -positions: the parcel positions file in constant/ (a vectorField, as
     written by mppicSeedParcels; default kinematicCloudPositions).
+    -report: write nothing; print the cells, parcels and weight of each
+    processor of the decomposition in constant/cellDecomposition (e.g. the
+    one decomposePar -cellDist writes for any method).
 
     system/decomposeParDict:
     \verbatim
@@ -151,6 +154,11 @@ int main(int argc, char *argv[])
         "Decomposition for method manual that balances cells and parcels"
     );
     argList::noParallel();
+    argList::addBoolOption
+    (
+        "report",
+        "print the balance of constant/cellDecomposition, write nothing"
+    );
     argList::addOption
     (
         "positions",
@@ -174,11 +182,17 @@ int main(int argc, char *argv[])
         )
     );
 
+    const bool report = args.found("report");
     const label nDomains = decomposeDict.get<label>("numberOfSubdomains");
     const dictionary& coeffs =
-        decomposeDict.subDict("mppicDecomposeByParcelsCoeffs");
+        decomposeDict.optionalSubDict("mppicDecomposeByParcelsCoeffs");
 
-    const labelVector n(coeffs.get<labelVector>("n"));
+    const labelVector n
+    (
+        report
+      ? coeffs.getOrDefault<labelVector>("n", labelVector(nDomains, 1, 1))
+      : coeffs.get<labelVector>("n")
+    );
     if (cmptMin(n) < 1 || cmptProduct(n) != nDomains)
     {
         FatalIOErrorInFunction(coeffs)
@@ -238,27 +252,37 @@ int main(int argc, char *argv[])
         weight[celli] += parcelWeight*nParcels[celli];
     }
 
-    labelList processor(mesh.nCells(), -1);
-    cutSlabs
+    IOobject decompositionIO
     (
-        identity(mesh.nCells()), mesh.cellCentres(), weight, n, 0, 0,
-        processor
+        "cellDecomposition",
+        mesh.facesInstance(),
+        mesh,
+        report ? IOobject::MUST_READ : IOobject::NO_READ,
+        IOobject::NO_WRITE,
+        false
     );
 
-    labelIOList cellDecomposition
-    (
-        IOobject
+    labelList processor(mesh.nCells(), -1);
+    if (report)
+    {
+        processor = labelIOList(decompositionIO);
+        if (processor.size() != mesh.nCells())
+        {
+            FatalErrorInFunction
+                << decompositionIO.objectPath() << " lists "
+                << processor.size() << " cells, the mesh has "
+                << mesh.nCells() << exit(FatalError);
+        }
+    }
+    else
+    {
+        cutSlabs
         (
-            "cellDecomposition",
-            mesh.facesInstance(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        processor
-    );
-    cellDecomposition.write();
+            identity(mesh.nCells()), mesh.cellCentres(), weight, n, 0, 0,
+            processor
+        );
+        labelIOList(decompositionIO, processor).write();
+    }
 
     Info<< nl << "processor  cells  parcels  weight" << nl;
     for (label proci = 0; proci < nDomains; ++proci)
@@ -276,8 +300,8 @@ int main(int argc, char *argv[])
         }
         Info<< proci << "  " << cells << "  " << parcels << "  " << w << nl;
     }
-    Info<< nl << "Wrote " << cellDecomposition.objectPath() << nl
-        << "End" << nl << endl;
+    Info<< nl << (report ? "Read " : "Wrote ") << decompositionIO.objectPath()
+        << nl << "End" << nl << endl;
 
     return 0;
 }
