@@ -6,6 +6,68 @@
 #include "reconstructFlux.H"
 #include "fvcSurfaceIntegrate.H"
 #include "extrapolatedCalculatedFvPatchFields.H"
+#include "MeshObject.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace mppicReconstruct
+{
+
+//- The mesh's part of the reconstruction, n_f = S_f/|S_f| and
+//  inv(sum_f n_f S_f), kept with the mesh (the solvers reconstruct two or
+//  three times a step; these depend on the geometry only)
+class reconstructionGeometry
+:
+    public MeshObject<fvMesh, MoveableMeshObject, reconstructionGeometry>
+{
+    //- Unit face normals
+    autoPtr<surfaceVectorField> SfHat_;
+
+    //- inv(sum_f n_f S_f) of each cell
+    tensorField invTensor_;
+
+    void calculate()
+    {
+        const fvMesh& mesh = this->mesh_;
+        SfHat_.reset(new surfaceVectorField(mesh.Sf()/mesh.magSf()));
+        const volTensorField faceTensor(fvc::surfaceSum(SfHat_()*mesh.Sf()));
+        invTensor_ = inv(faceTensor)().primitiveField();
+    }
+
+public:
+
+    TypeName("mppicReconstructionGeometry");
+
+    explicit reconstructionGeometry(const fvMesh& mesh)
+    :
+        MeshObject<fvMesh, MoveableMeshObject, reconstructionGeometry>(mesh)
+    {
+        calculate();
+    }
+
+    const surfaceVectorField& SfHat() const
+    {
+        return SfHat_();
+    }
+
+    const tensorField& invTensor() const
+    {
+        return invTensor_;
+    }
+
+    virtual bool movePoints()
+    {
+        calculate();
+        return true;
+    }
+};
+
+defineTypeNameAndDebug(reconstructionGeometry, 0);
+
+} // End namespace mppicReconstruct
+} // End namespace Foam
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
