@@ -33,6 +33,14 @@ Foam::LeanMPPICCloud<CloudType>::readStep() const
 
 
 template<class CloudType>
+typename Foam::LeanMPPICCloud<CloudType>::mfixPackingModelType*
+Foam::LeanMPPICCloud<CloudType>::ourPackingModel()
+{
+    return dynamic_cast<mfixPackingModelType*>(&this->packingModel());
+}
+
+
+template<class CloudType>
 template<class TrackCloudType>
 void Foam::LeanMPPICCloud<CloudType>::updateAverages
 (
@@ -49,16 +57,7 @@ void Foam::LeanMPPICCloud<CloudType>::updateAverages
     // The packing models of this library read the volume and velocity
     // averages only; OpenFOAM's also the density and the squared velocity
     // deviation (Explicit, Implicit)
-    typedef typename std::decay
-    <
-        decltype(this->packingModel().owner())
-    >::type packingCloudType;
-
-    const bool stockPacking =
-        !isA<PackingModels::MfixPackingModel<packingCloudType>>
-        (
-            this->packingModel()
-        );
+    const bool stockPacking = !ourPackingModel();
 
     const fvMesh& mesh = this->mesh();
     const word& name = this->name();
@@ -226,6 +225,11 @@ void Foam::LeanMPPICCloud<CloudType>::motion
     }
 
     const scalar deltaT = this->db().time().deltaTValue();
+
+    if (this->packingModel().active() && ourPackingModel())
+    {
+        ourPackingModel()->beforeMotion();
+    }
 
     // Forces and tracking
     td.part() = parcelType::trackingData::tpLinearTrack;

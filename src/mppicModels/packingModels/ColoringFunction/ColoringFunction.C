@@ -195,6 +195,20 @@ void Foam::PackingModels::ColoringFunction<CloudType>::recordChange
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
+void Foam::PackingModels::ColoringFunction<CloudType>::beforeMotion()
+{
+    // Nothing recorded yet while parcels that have moved before (age > 0)
+    // are in the cloud: they were read from a written time. Record where
+    // they are, which is where the uninterrupted run's last step left them
+    // (the parcels injected since, of age 0, were not there then)
+    if (impulse_ == impulseType::neighbour && !entries_.hasRecords())
+    {
+        entries_.recordCells(this->owner(), true);
+    }
+}
+
+
+template<class CloudType>
 void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
 (
     const bool store

@@ -278,13 +278,21 @@ void Foam::ParcelEntries<CloudType>::admitUpToClosePack
 
 
 template<class CloudType>
-void Foam::ParcelEntries<CloudType>::recordCells(const CloudType& cloud)
+void Foam::ParcelEntries<CloudType>::recordCells
+(
+    const CloudType& cloud,
+    const bool agedOnly
+)
 {
     lastCells_.clear();
     lastCells_.setCapacity(cloud.size());
 
     for (const parcelType& p : cloud)
     {
+        if (agedOnly && p.age() <= 0)
+        {
+            continue;
+        }
         lastCells_.append
         (
             record
