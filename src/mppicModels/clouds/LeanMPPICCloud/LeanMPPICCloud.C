@@ -25,10 +25,16 @@ template<class CloudType>
 typename Foam::LeanMPPICCloud<CloudType>::stepType
 Foam::LeanMPPICCloud<CloudType>::readStep() const
 {
-    return stepTypeNames.getOrDefault
-    (
-        "cloudStep", this->particleProperties(), stepType::lean
-    );
+    const dictionary& dict = this->particleProperties();
+    const word name(dict.getOrDefault<word>("cloudStep", "lean"));
+    if (!stepTypeNames.found(name))
+    {
+        FatalIOErrorInFunction(dict)
+            << "cloudStep " << name << " in " << dict.name()
+            << ": allowed values " << flatOutput(stepTypeNames.sortedToc())
+            << exit(FatalIOError);
+    }
+    return stepTypeNames.get(name);
 }
 
 
