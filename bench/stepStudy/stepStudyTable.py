@@ -206,7 +206,7 @@ def plot(krows, urows, path):
         ax.set_xticklabels(["5e-4", "1e-3", "2e-3", "4e-3"])
         ax.minorticks_off()
         ax.set_xlabel("gas step [s]")
-        ax.legend(fontsize=7, loc="lower left" if ax is axes[0] else "best")
+        ax.legend(fontsize=7, loc="upper right" if ax is axes[0] else "best")
     fig.suptitle("Accuracy and cost against the gas step (bench/stepStudy)")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
