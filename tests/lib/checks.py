@@ -32,17 +32,7 @@ def report(ok, what):
 
 def read_list(path):
     """Values of a lagrangian scalar field file (ascii, N(...) or N{v})."""
-    text = open(path).read()
-    body = text[text.index("}", text.index("FoamFile")) + 1:]
-    body = re.sub(r"//.*", "", body)
-    uniform = re.search(r"(\d+)\s*\{\s*([^}\s]+)\s*\}", body)
-    listed = re.search(r"(\d+)\s*\(([^)]*)\)", body, re.S)
-    if uniform and (not listed or uniform.start() < listed.start()):
-        return [float(uniform.group(2))]*int(uniform.group(1))
-    n = int(listed.group(1))
-    values = [float(v) for v in listed.group(2).split()]
-    assert len(values) == n, path
-    return values
+    return [row[0] for row in read_rows(path)]
 
 
 def parcel_masses(case, time, cloud="kinematicCloud"):

@@ -52,9 +52,9 @@ Usage
     \endverbatim
 
     \table
-        Keyword      | Meaning                                 | Default | Range
-        n            | slabs in x, y and z                     | (required) | each >= 1, product numberOfSubdomains
-        parcelWeight | cost of a parcel relative to a cell     | 1       | [0, inf)
+        Keyword      | Meaning                                 | Default | Range | MFiX
+        n            | slabs in x, y and z                     | (required) | each >= 1, product numberOfSubdomains | -
+        parcelWeight | cost of a parcel relative to a cell     | 1       | [0, inf) | -
     \endtable
     A value outside its range stops with a FatalIOError naming the
     keyword and the value.
