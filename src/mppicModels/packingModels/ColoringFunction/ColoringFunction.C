@@ -163,6 +163,14 @@ Foam::PackingModels::ColoringFunction<CloudType>::fullCells() const
         }
     }
 
+    // The refused parcels that go back to cells here from other processors
+    const scalarField& returned = entries_.returnedVolume();
+    if (returned.size())
+    {
+        volume += returned;
+        largest = max(largest, entries_.returnedLargest());
+    }
+
     // No room for half of its largest parcel, as the capacity limit admits
     boolList full(mesh.nCells());
     forAll(full, celli)
@@ -227,6 +235,16 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
         if (holdSupportedPacks_ && capacityLimit_)
         {
             support_.update(this->owner().g().value(), fullCells());
+
+            if (Pstream::parRun())
+            {
+                boolList heldCells(this->owner().mesh().nCells());
+                forAll(heldCells, celli)
+                {
+                    heldCells[celli] = support_.held(celli);
+                }
+                entries_.shareHeld(heldCells);
+            }
         }
     }
     else
@@ -299,7 +317,11 @@ velocityCorrection
         vector kept =
             entries_.keptVelocity(p, p.U() + correction, pack.uMean);
 
-        if (support_.held(entries_.finalCell(p)))
+        if
+        (
+            support_.held(entries_.finalCell(p))
+         || entries_.returnsToHeldCell(p)
+        )
         {
             kept = support_.heldVelocity(p.U(), kept);
         }

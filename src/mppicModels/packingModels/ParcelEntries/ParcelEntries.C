@@ -61,6 +61,27 @@ Foam::label Foam::ParcelEntries<CloudType>::crossedFace
 }
 
 
+template<class CloudType>
+Foam::scalar Foam::ParcelEntries<CloudType>::trackLength
+(
+    const scalar travel,
+    const scalar toProcessorFace
+)
+{
+    // OpenFOAM v1912's MPPICParcel resumes a correction track on the next
+    // processor with its velocity scaled by the fraction of the step left,
+    // 1 - f, f = d/L, so that of the rest of a track of length L it covers
+    // (1 - f)^2 L, not (1 - f) L. For the parcel to end travel along its
+    // path, ask for L with d + (L - d)^2/L = travel
+    const scalar d = toProcessorFace;
+    if (d <= 0 || d >= travel)
+    {
+        return travel;
+    }
+    return 0.5*((travel + d) + Foam::sqrt((travel - d)*(travel + 3*d)));
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -89,20 +110,69 @@ void Foam::ParcelEntries<CloudType>::update
     HashTable<label, labelPair, labelPair::Hash<>> unmatched;
     bool searched = false;
 
-    for (const parcelType& p : cloud)
+    // A parcel that entered its cell celli from cell from (or, remote >= 0,
+    // from a cell on another processor) along direction, depth deep
+    auto enter = [&]
+    (
+        const parcelType& p,
+        const label from,
+        const label remote,
+        const vector& direction,
+        const scalar depth
+    )
     {
         const scalar volume = p.nParticle()*p.volume();
+        entry& e = entries_[&p];
+        e.direction = direction;
+        e.from = from;
+        e.remote = remote;
+        entrants[p.cell()].append({&p, depth, volume, from, remote});
+
+        if (from >= 0)
+        {
+            startVolume[from] += volume;
+        }
+    };
+
+    // A parcel not recorded: it entered if its velocity carried it across
+    // one of its cell's faces in this step
+    auto enterOrStay = [&](const parcelType& p)
+    {
+        const label celli = p.cell();
+        vector n;
+        scalar depth = 0;
+        const label facei = crossedFace(mesh, p, deltaT, n, depth);
+        if (facei < 0)
+        {
+            const scalar volume = p.nParticle()*p.volume();
+            startVolume[celli] += volume;
+            keptVolume[celli] += volume;
+            return;
+        }
+        enter
+        (
+            p,
+            mesh.isInternalFace(facei)
+          ? cellFaceGeometry::cellAcross(mesh, celli, facei)
+          : -1,
+            -1,
+            -n,
+            depth
+        );
+    };
+
+    // Parcels not recorded here, in parallel: the processor they came from
+    // may have recorded them
+    DynamicList<const parcelType*> arrived;
+
+    for (const parcelType& p : cloud)
+    {
         const label celli = p.cell();
 
         if (debug)
         {
             stepCells_[&p] = celli;
         }
-
-        // Where it was: recorded, else guessed from its velocity
-        label from = -1;
-        vector direction = Zero;
-        scalar depth = 0;
 
         const label recordi = findRecord
         (
@@ -111,43 +181,27 @@ void Foam::ParcelEntries<CloudType>::update
         if (recordi >= 0)
         {
             matched[recordi] = true;
-            from = lastCells_[recordi].cell;
+            const label from = lastCells_[recordi].cell;
             if (from == celli)
             {
+                const scalar volume = p.nParticle()*p.volume();
                 startVolume[celli] += volume;
                 keptVolume[celli] += volume;
                 continue;
             }
-            direction = mesh.cellCentres()[celli] - mesh.cellCentres()[from];
-            depth = mag(direction);
+            vector direction =
+                mesh.cellCentres()[celli] - mesh.cellCentres()[from];
+            const scalar depth = mag(direction);
             direction /= max(depth, VSMALL);
+            enter(p, from, -1, direction, depth);
+        }
+        else if (Pstream::parRun())
+        {
+            arrived.append(&p);
         }
         else
         {
-            vector n;
-            const label facei = crossedFace(mesh, p, deltaT, n, depth);
-            if (facei < 0)
-            {
-                startVolume[celli] += volume;
-                keptVolume[celli] += volume;
-                continue;
-            }
-            direction = -n;
-            if (mesh.isInternalFace(facei))
-            {
-                from =
-                    cellFaceGeometry::cellAcross(mesh, celli, facei);
-            }
-        }
-
-        entry& e = entries_[&p];
-        e.direction = direction;
-        e.from = from;
-        entrants[celli].append({&p, depth, volume, from});
-
-        if (from >= 0)
-        {
-            startVolume[from] += volume;
+            enterOrStay(p);
         }
     }
 
@@ -156,6 +210,29 @@ void Foam::ParcelEntries<CloudType>::update
         if (!matched[recordi])
         {
             startVolume[lastCells_[recordi].cell] += lastCells_[recordi].volume;
+        }
+    }
+
+    if (Pstream::parRun())
+    {
+        shareDepartures(mesh, matched);
+        returnedVolume_.setSize(mesh.nCells(), Zero);
+        returnedLargest_.setSize(mesh.nCells(), Zero);
+
+        for (const parcelType* pp : arrived)
+        {
+            const auto iter =
+                originIndex_.cfind(labelPair(pp->origProc(), pp->origId()));
+            if (!iter.found())
+            {
+                enterOrStay(*pp);
+                continue;
+            }
+            const origin& o = origins_[iter.val()];
+            vector direction = mesh.cellCentres()[pp->cell()] - o.centre;
+            const scalar depth = mag(direction);
+            direction /= max(depth, VSMALL);
+            enter(*pp, -1, iter.val(), direction, depth);
         }
     }
 
@@ -200,39 +277,60 @@ void Foam::ParcelEntries<CloudType>::admitUpToClosePack
         }
     }
 
-    while (pending.size())
+    // Refused parcels that go back to a cell on another processor, by
+    // processor; exchanged once no cell here is pending, which may make
+    // cells there or here refuse more: until no processor has new ones
+    List<DynamicList<entrant>> refusedAway(Pstream::nProcs());
+
+    do
     {
-        const label celli = pending.remove();
-
-        // Room up to close pack, to the nearest parcel: a cell takes the
-        // parcel count that comes closest to close pack
-        scalar room = closePackFraction*mesh.V()[celli] - keptVolume[celli];
-
-        for (const entrant& candidate : entrants[celli])
+        while (pending.size())
         {
-            entry& e = entries_[candidate.parcel];
-            if (!e.admitted)
-            {
-                continue;
-            }
-            if (candidate.volume <= room + 0.5*candidate.volume)
-            {
-                room -= candidate.volume;
-                continue;
-            }
+            const label celli = pending.remove();
 
-            e.admitted = false;
-            const label from = candidate.from;
-            if (from >= 0)
+            // Room up to close pack, to the nearest parcel: a cell takes
+            // the parcel count that comes closest to close pack
+            scalar room =
+                closePackFraction*mesh.V()[celli] - keptVolume[celli];
+
+            for (const entrant& candidate : entrants[celli])
             {
-                keptVolume[from] += candidate.volume;
-                if (entrants[from].size())
+                entry& e = entries_[candidate.parcel];
+                if (!e.admitted)
                 {
-                    pending.append(from);
+                    continue;
+                }
+                if (candidate.volume <= room + 0.5*candidate.volume)
+                {
+                    room -= candidate.volume;
+                    continue;
+                }
+
+                e.admitted = false;
+                const label from = candidate.from;
+                if (from >= 0)
+                {
+                    keptVolume[from] += candidate.volume;
+                    if (entrants[from].size())
+                    {
+                        pending.append(from);
+                    }
+                }
+                else if (candidate.remote >= 0)
+                {
+                    refusedAway[origins_[candidate.remote].proc].append
+                    (
+                        candidate
+                    );
                 }
             }
         }
     }
+    while
+    (
+        Pstream::parRun()
+     && returnRefused(refusedAway, keptVolume, entrants, pending)
+    );
 }
 
 
@@ -271,15 +369,25 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
     const label celli = p.cell();
     const entry* e = find(p);
 
-    if (e && !e->admitted && e->from >= 0)
+    if (e && !e->admitted && (e->from >= 0 || e->remote >= 0))
     {
-        // Refused: back into the cell it came from, aiming at its centre
-        // (a face or an edge/corner neighbour), and not beyond it
-        vector back = mesh.cellCentres()[e->from] - x;
+        // Refused: back into the cell it came from (here or on another
+        // processor), aiming at its centre (a face or an edge/corner
+        // neighbour), and not beyond it
+        const bool here = e->from >= 0;
+        vector back =
+            (here ? mesh.cellCentres()[e->from] : origins_[e->remote].centre)
+          - x;
         back /= max(mag(back), VSMALL);
 
-        const scalar enter = cellFaceGeometry::entryDistance(mesh, e->from, x, back);
-        const scalar leave = cellFaceGeometry::exitDistance(mesh, e->from, x, back);
+        const scalar enter =
+            here
+          ? cellFaceGeometry::entryDistance(mesh, e->from, x, back)
+          : cellFaceGeometry::entryDistance(origins_[e->remote].faces, x, back);
+        const scalar leave =
+            here
+          ? cellFaceGeometry::exitDistance(mesh, e->from, x, back)
+          : cellFaceGeometry::exitDistance(origins_[e->remote].faces, x, back);
 
         const scalar backTravel =
             min
@@ -288,13 +396,22 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
                 enter + 0.99*(leave - enter)
             );
 
-        return backTravel/deltaT*back;
+        return
+            trackLength
+            (
+                backTravel,
+                here ? -1 : cellFaceGeometry::distanceToProcessorFace
+                (
+                    mesh, celli, x, back
+                )
+            )/deltaT*back;
     }
 
     if (e && !e->admitted)
     {
-        // Refused, from a cell on another processor: back out of this
-        // cell the way it came in, a little into the cell beyond
+        // Refused, from a cell not known (an injected parcel that came in
+        // through a processor face): back out of this cell the way it
+        // came in, a little into the cell beyond
         const vector back = -e->direction;
         const scalar toFace = cellFaceGeometry::exitDistance(mesh, celli, x, back);
         const scalar cellSize = Foam::cbrt(mesh.V()[celli]);
@@ -306,7 +423,12 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
                 toFace + 0.49*cellSize
             );
 
-        return backTravel/deltaT*back;
+        return
+            trackLength
+            (
+                backTravel,
+                cellFaceGeometry::distanceToProcessorFace(mesh, celli, x, back)
+            )/deltaT*back;
     }
 
     // Otherwise the correction move stays in the parcel's cell
@@ -328,6 +450,12 @@ void Foam::ParcelEntries<CloudType>::clear()
     stepCells_.clear();
     entries_.clear();
     startFraction_.clear();
+    departedFrom_.clear();
+    origins_.clear();
+    originIndex_.clear();
+    originHeld_.clear();
+    returnedVolume_.clear();
+    returnedLargest_.clear();
 }
 
 
