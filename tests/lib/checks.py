@@ -14,6 +14,7 @@ Usage:
     checks.py subCyclesCFL <case> <log> <CFL> <cellHeight>
     checks.py balance <case> <specie> <relTol> <minTransferred>
     checks.py sameState <caseA> <caseB> <time> <relTol> <field> [<field> ...]
+    checks.py differs <caseA> <caseB> <time> <relTol> <field> [<field> ...]
 """
 import math
 import os
@@ -214,28 +215,46 @@ def read_rows(path):
     return rows
 
 
+def largest_difference(a, b, time, field):
+    """Largest |x_a - x_b| of a field at a time over the largest magnitude
+    of its column (each column scaled by its own); None when the two have
+    different sizes or are empty."""
+    ra = read_rows(os.path.join(a, time, field))
+    rb = read_rows(os.path.join(b, time, field))
+    if len(ra) == 0 or len(ra) != len(rb) \
+            or any(len(x) != len(y) for x, y in zip(ra, rb)):
+        return None
+    worst = 0.0
+    for c in range(len(ra[0])):
+        scale = max(max(abs(r[c]) for r in ra), max(abs(r[c]) for r in rb))
+        if scale > 0:
+            worst = max(worst, max(abs(x[c] - y[c]) for x, y in zip(ra, rb))
+                        / scale)
+    return worst
+
+
 def same_state(a, b, time, tol, *fields):
     """Field by field, entry by entry: |x_a - x_b| <= relTol*max|column|
     (each column of a field scaled by its own largest magnitude)."""
     tol = float(tol)
     for field in fields:
-        pa, pb = os.path.join(a, time, field), os.path.join(b, time, field)
-        ra, rb = read_rows(pa), read_rows(pb)
-        if len(ra) == 0 or len(ra) != len(rb) \
-                or any(len(x) != len(y) for x, y in zip(ra, rb)):
-            report(False, "%s at t=%s: %d vs %d entries" % (field, time,
-                                                            len(ra), len(rb)))
+        worst = largest_difference(a, b, time, field)
+        if worst is None:
+            report(False, "%s at t=%s: sizes differ or empty" % (field, time))
             continue
-        worst = 0.0
-        for c in range(len(ra[0])):
-            scale = max(max(abs(r[c]) for r in ra), max(abs(r[c]) for r in rb))
-            if scale == 0:
-                continue
-            worst = max(worst, max(abs(x[c] - y[c]) for x, y in zip(ra, rb))
-                        / scale)
         report(worst <= tol, "%s at t=%s: %d entries, largest difference %.3g"
-               " of the column's scale <= %g" % (field, time, len(ra), worst,
-                                                 tol))
+               " of the column's scale <= %g%s" % (
+                   field, time, len(read_rows(os.path.join(a, time, field))),
+                   worst, tol, " (bitwise)" if worst == 0 else ""))
+
+
+def differs(a, b, time, tol, *fields):
+    """The largest difference of at least one of the fields exceeds relTol:
+    a comparison that can fail."""
+    tol = float(tol)
+    worst = max(largest_difference(a, b, time, f) or 0.0 for f in fields)
+    report(worst > tol, "%s and %s differ at t=%s: largest difference %.3g"
+           " > %g" % (a, b, time, worst, tol))
 
 
 def main(argv):
@@ -243,7 +262,7 @@ def main(argv):
     {"parity": parity, "serialParallel": serial_parallel,
      "cloudMass": cloud_mass, "fatal": fatal,
      "subCycles": sub_cycles, "subCyclesCFL": sub_cycles_cfl,
-     "balance": balance, "sameState": same_state}[cmd](*args)
+     "balance": balance, "sameState": same_state, "differs": differs}[cmd](*args)
     return 1 if failures else 0
 
 

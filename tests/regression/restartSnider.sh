@@ -4,7 +4,7 @@
 # tutorials/validation/uniformFluidization with mfixSnider as the case sets
 # it (slip factor 0.9, MFiX's collision damping) in a prescribed uniform gas
 # flow of 0.8 m/s upward (the gas is not solved, so that only the cloud is
-# tested: a restart of the gas solver is not exact in v1912, issue 20),
+# tested; restartContinuity.sh tests the gas with it),
 # binary writes at full precision: one run 0 -> 0.05 s, and the same case
 # stopped at 0.025 s and continued from there to 0.05 s. mfixSnider keeps
 # the previous step's mean solids velocity (<cloud>:UMean): it is written
