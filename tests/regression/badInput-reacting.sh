@@ -7,10 +7,13 @@
 #   specie); liquids { H2X; } (not in OpenFOAM's liquid database);
 #   reactingCloudProperties: singlePhaseMixtureCoeffs/phases missing;
 #   injection nParticle -25 (statistical weight, range (0, inf));
+#   droplet diameter -2e-4 (range (0, inf); OpenFOAM ran on, exit 0) and
+#   averagingMethod basci (OpenFOAM aborted in the first step, exit 134),
+#   both stopped before the first step with exit status 1;
 #   system/controlDict: reactingCloudBalance species (H2X), cloud noCloud.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: badInput-reacting.sh <runDir>}"
-. "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
+. "${0%/*}/badInputFunctions"
 status=0
 
 copyTutorial verification/wetBulb "$runDir/prepared"
@@ -32,7 +35,7 @@ breakAndRun()   # name dict entry value(-remove for none) texts...
             > /dev/null
     fi
     (cd "$dir" && mppicReactingPimpleFoam > log.broken 2>&1)
-    local rc=$?
+    rc=$?
     echo "== $name"
     check fatal "$dir/log.broken" $rc "$@" || status=1
 }
@@ -49,6 +52,16 @@ breakAndRun phasesMissing reactingCloudProperties \
 breakAndRun negativeWeight reactingCloudProperties \
     subModels/injectionModels/droplet/nParticle -25 \
     "nParticle" "-25" "(0, inf)"
+
+droplet=subModels/injectionModels/droplet
+breakAndRun negativeDiameter reactingCloudProperties \
+    $droplet/sizeDistribution/fixedValueDistribution/value -2e-4 \
+    "keyword value" "value -0.0002" "(0, inf)"
+stoppedBeforeFirstStep "$runDir/negativeDiameter/log.broken" $rc || status=1
+breakAndRun averagingMisspelt reactingCloudProperties \
+    solution/averagingMethod basci "keyword averagingMethod" "value basci" \
+    "basic" "dual"
+stoppedBeforeFirstStep "$runDir/averagingMisspelt/log.broken" $rc || status=1
 
 breakAndRun balanceSpecies ../system/controlDict functions/balance/species \
     "(H2X)" "species" "H2X"
