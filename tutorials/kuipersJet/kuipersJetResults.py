@@ -4,6 +4,7 @@
 Usage:
     kuipersJetResults.py [--case DIR] [--label NAME] [--plot] [--check]
                          [--tolerance 0.15] [--from T0] [--row] [--wallTime S]
+                         [--against DIR ...]
 
 Reads what the case's function objects and solver wrote:
   postProcessing/bedPressureDrop/0/bedPressureDrop.dat  deltaP [Pa], every step
@@ -32,6 +33,10 @@ and prints:
     only heights the profile reaches are compared.
 --row prints one markdown table row instead (for compareSolvers). --plot
 writes kuipersJet_<label>_{pressureDrop,packing,profiles,snapshots}.png.
+--against DIR ...: for each other run of the case, the mean absolute
+difference between its time-averaged profiles and this run's (at this run's
+heights), and its deltaP/weight and bed expansion beside this run's: how far
+two runs are apart (seeds of the parcel jitter, serial and parallel).
 --check: exit status 1 unless the parcel count and mass stay at their first
 values, the largest cell solids fraction keeps the bound, and the mean deltaP
 is within --tolerance of the bed weight.
@@ -409,6 +414,30 @@ def plot(res, case, label):
     return names
 
 
+def compare_runs(case, others, t0):
+    """Profile distance between this run and each other run, and their
+    deltaP/weight and bed expansion."""
+    mine, base = sampled_profiles(case), summary(case, t0)
+    print("run | profile 3.4 cm: mean abs difference from %s | 6.4 cm | "
+          "deltaP/weight | bed expansion [m]" % case)
+    print("%s | - | - | %.3f | %.3f" % (case, base.get("dpRatio", float("nan")),
+                                        base.get("expansion", float("nan"))))
+    for other in others:
+        theirs, res = sampled_profiles(other), summary(other, t0)
+        cells = []
+        for x_cm in (3.4, 6.4):
+            if x_cm in mine and x_cm in theirs:
+                h, eps = theirs[x_cm]
+                cells.append("%.4f" % mean_abs_difference(
+                    h, eps, list(zip(*mine[x_cm]))))
+            else:
+                cells.append("-")
+        print("%s | %s | %s | %.3f | %.3f" % (
+            other, cells[0], cells[1], res.get("dpRatio", float("nan")),
+            res.get("expansion", float("nan"))))
+    return 0
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--case", default=".")
@@ -421,10 +450,13 @@ def main():
     parser.add_argument("--wallTime", type=float, default=None)
     parser.add_argument("--failure", default="")
     parser.add_argument("--tableHead", action="store_true")
+    parser.add_argument("--against", nargs="+", default=[])
     args = parser.parse_args()
     if args.tableHead:
         print(TABLE_HEAD)
         return 0
+    if args.against:
+        return compare_runs(args.case, args.against, args.t0)
 
     res = summary(args.case, args.t0)
     if args.row:
