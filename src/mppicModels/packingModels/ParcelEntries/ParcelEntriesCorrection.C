@@ -1,0 +1,148 @@
+/*---------------------------------------------------------------------------*\
+    mppicModels: MFiX-PIC dense-particle models for OpenFOAM
+    This file is part of the mppicModels project, GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    ParcelEntries' correction of a parcel: where its correction move may
+    take it (back into the cell that it came from when refused, here or on
+    another processor, else within its own cell) and the velocity it keeps
+    (included by ParcelEntries.H).
+
+\*---------------------------------------------------------------------------*/
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::scalar Foam::ParcelEntries<CloudType>::trackLength
+(
+    const scalar travel,
+    const scalar toProcessorFace
+)
+{
+    // OpenFOAM v1912's MPPICParcel resumes a correction track on the next
+    // processor with its velocity scaled by the fraction of the step left,
+    // 1 - f, f = d/L, so that of the rest of a track of length L it covers
+    // (1 - f)^2 L, not (1 - f) L. For the parcel to end travel along its
+    // path, ask for L with d + (L - d)^2/L = travel
+    const scalar d = toProcessorFace;
+    if (d <= 0 || d >= travel)
+    {
+        return travel;
+    }
+    return 0.5*((travel + d) + Foam::sqrt((travel - d)*(travel + 3*d)));
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::vector Foam::ParcelEntries<CloudType>::keptVelocity
+(
+    const parcelType& p,
+    const vector& U,
+    const vector& uPack
+) const
+{
+    const entry* e = find(p);
+
+    if (e && !e->admitted)
+    {
+        const scalar inward = (U - uPack) & e->direction;
+        if (inward > 0)
+        {
+            return U - inward*e->direction;
+        }
+    }
+    return U;
+}
+
+
+template<class CloudType>
+Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
+(
+    const fvMesh& mesh,
+    const parcelType& p,
+    const vector& dU,
+    const scalar deltaT
+) const
+{
+    const point x = p.position();
+    const label celli = p.cell();
+    const entry* e = find(p);
+
+    if (e && !e->admitted && (e->from >= 0 || e->remote >= 0))
+    {
+        // Refused: back into the cell it came from (here or on another
+        // processor), aiming at its centre (a face or an edge/corner
+        // neighbour), and not beyond it
+        const bool here = e->from >= 0;
+        vector back =
+            (here ? mesh.cellCentres()[e->from] : origins_[e->remote].centre)
+          - x;
+        back /= max(mag(back), VSMALL);
+
+        const scalar enter =
+            here
+          ? cellFaceGeometry::entryDistance(mesh, e->from, x, back)
+          : cellFaceGeometry::entryDistance(origins_[e->remote].faces, x, back);
+        const scalar leave =
+            here
+          ? cellFaceGeometry::exitDistance(mesh, e->from, x, back)
+          : cellFaceGeometry::exitDistance(origins_[e->remote].faces, x, back);
+
+        const scalar backTravel =
+            min
+            (
+                max((dU & back)*deltaT, enter + 0.01*(leave - enter)),
+                enter + 0.99*(leave - enter)
+            );
+
+        return
+            trackLength
+            (
+                backTravel,
+                here ? -1 : cellFaceGeometry::distanceToProcessorFace
+                (
+                    mesh, celli, x, back
+                )
+            )/deltaT*back;
+    }
+
+    if (e && !e->admitted)
+    {
+        // Refused, from a cell not known (an injected parcel that came in
+        // through a processor face): back out of this cell the way it
+        // came in, a little into the cell beyond
+        const vector back = -e->direction;
+        const scalar toFace = cellFaceGeometry::exitDistance(mesh, celli, x, back);
+        const scalar cellSize = Foam::cbrt(mesh.V()[celli]);
+
+        const scalar backTravel =
+            min
+            (
+                max((dU & back)*deltaT, toFace + 0.01*cellSize),
+                toFace + 0.49*cellSize
+            );
+
+        return
+            trackLength
+            (
+                backTravel,
+                cellFaceGeometry::distanceToProcessorFace(mesh, celli, x, back)
+            )/deltaT*back;
+    }
+
+    // Otherwise the correction move stays in the parcel's cell
+    const scalar travel = mag(dU)*deltaT;
+    if (travel <= VSMALL)
+    {
+        return dU;
+    }
+
+    const scalar room = 0.99*cellFaceGeometry::exitDistance(mesh, celli, x, dU/mag(dU));
+
+    return travel > room ? dU*room/travel : dU;
+}
+
+
+// ************************************************************************* //
