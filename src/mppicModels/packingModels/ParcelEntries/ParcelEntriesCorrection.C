@@ -128,7 +128,9 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
             trackLength
             (
                 backTravel,
-                cellFaceGeometry::distanceToProcessorFace(mesh, celli, x, back)
+                Pstream::parRun()
+              ? cellFaceGeometry::distanceToProcessorFace(mesh, celli, x, back)
+              : -1
             )/deltaT*back;
     }
 
