@@ -11,7 +11,13 @@
 #     (the field is cell-based: one parcel is 0.12 of a cell);
 #   - the bed pressure drop over 0.1-0.2 s, after the start-up jump of the
 #     packed bed, lies within 15 % of the bed weight per area,
-#     6.8229*9.81/(0.57*0.015) = 7828 Pa (measured 1.11 x).
+#     6.8229*9.81/(0.57*0.015) = 7828 Pa (measured 1.11 x);
+#   - the slab measure's samples (slabSamples, every 0.1 s from 0.1 s): two
+#     instants, the one at 0.2 s equal to the written field to 1e-12;
+#   - the slab measure on hand-made 76 x 100 grids (kuipersJetSlabs.py): a
+#     row 62/76 = 0.816 at 0.56 over a run of 39/76 = 0.513 at 0.1 is a
+#     slab (rows 60 over 30); 60/76 = 0.789 dense, or a void run of 38
+#     (0.5, not wider than half), or the void above the dense row, is not.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: kuipersJet.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -43,5 +49,24 @@ check(res["maxCell"] <= 0.74 + 1e-9,
 check(abs(res["dpRatio"] - 1) <= 0.15,
       "mean deltaP over 0.1-0.2 s %.3f x bed weight within 15 %%"
       % res["dpRatio"])
+import kuipersJetSlabs as s
+samples = s.sample_grids(".", 0.1, (76, 100), 0.57, 1.0)
+check([t for t, _ in samples] == [0.1, 0.2],
+      "slab samples at %s s" % [t for t, _ in samples])
+cells, xs, ys = res["grid"]
+written = k.to_grid(k.solids_field(".", "0.2"), cells, len(xs), len(ys))
+diff = max(abs(a - b) for ra, rb in zip(written, samples[-1][1])
+           for a, b in zip(ra, rb))
+check(diff < 1e-12, "samples at 0.2 s = written field (largest difference %g)"
+      % diff)
+def grid(dense_row, n_dense, void_row, n_void):
+    g = [[0.4]*76 for _ in range(100)]
+    g[dense_row][:n_dense] = [0.56]*n_dense
+    g[void_row][5:5 + n_void] = [0.1]*n_void
+    return g
+check(s.slab_rows(grid(60, 62, 30, 39)) == (60, 30), "slab 62/76 over void 39/76")
+check(s.slab_rows(grid(60, 60, 30, 39)) is None, "no slab at 60/76 dense")
+check(s.slab_rows(grid(60, 62, 30, 38)) is None, "no slab over a void of 38/76")
+check(s.slab_rows(grid(30, 62, 60, 39)) is None, "no slab under a void")
 sys.exit(1 if failures else 0)
 PY

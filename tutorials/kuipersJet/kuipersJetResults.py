@@ -30,9 +30,12 @@ and prints:
   - the mean absolute difference of the time-averaged profiles (left and
     right of the jet averaged) from Kuipers' measured points, and the same
     for MFiX-PIC's curve (kuipersJetProfiles.csv, copied from seed 1 Fig. 6);
-    only heights the profile reaches are compared.
+    only heights the profile reaches are compared;
+  - the slab measure (kuipersJetSlabs.py): the share of the instants in the
+    statistics window at which a packed slab lies over a gas void.
 --row prints one markdown table row instead (for compareSolvers). --plot
-writes kuipersJet_<label>_{pressureDrop,packing,profiles,snapshots}.png.
+writes kuipersJet_<label>_{pressureDrop,packing,profiles,snapshots,slabs}.png
+(the snapshots mark a slab and the void under it).
 --against DIR ...: for each other run of the case, the mean absolute
 difference between its time-averaged profiles and this run's (at this run's
 heights), and its deltaP/weight and bed expansion beside this run's: how far
@@ -48,10 +51,13 @@ import os
 import re
 import sys
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import kuipersJetSlabs as slabs  # noqa: E402 (beside this file)
+
 WIDTH, DEPTH, G = 0.57, 0.015, 9.81
 CLOSE_PACK, AXIS = 0.62, 0.285
 CELL_VOLUME = 0.0075*0.01*0.0075
-HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def read_columns(path):
@@ -253,6 +259,7 @@ def summary(case, t0=None):
                 res["meanGrid"] = (name, grid)
                 res["expansion"] = bed_expansion(grid, ys)
                 break
+    slab_grids(case, res)
     res["profiles"] = sampled_profiles(case)
     ref = reference_profiles()
     res["mad"] = {}
@@ -265,6 +272,21 @@ def summary(case, t0=None):
             h, eps = res["profiles"][x_cm]
             res["mad"][("ours", x_cm)] = mean_abs_difference(h, eps, measured)
     return res
+
+
+def slab_grids(case, res):
+    """The slab measure (kuipersJetSlabs) over the statistics window, from
+    the slabSamples output, else from the written fields."""
+    grids = slabs.sample_grids(case, res["t0"], (76, 100), WIDTH, 1.0)
+    res["slabSource"] = "slabSamples every 0.1 s"
+    if not grids and "grid" in res:
+        cells, xs, ys = res["grid"]
+        res["slabSource"] = "written fields"
+        for t, name in time_dirs(case):
+            field = solids_field(case, name) if t >= res["t0"] - 1e-9 else None
+            if field is not None and t > 0:
+                grids.append((t, to_grid(field, cells, len(xs), len(ys))))
+    res["slab"], res["slabCount"], res["slabFlags"] = slabs.slab_measure(grids)
 
 
 def fmt(res, key, form, scale=1.0):
@@ -290,6 +312,11 @@ def print_report(res, label):
               % (res["maxCell"], res["p99Cell"], res["maxAveraged"],
                  res["minGas"], CLOSE_PACK, CLOSE_PACK, res["parcelFraction"],
                  res["bound"]))
+    if res.get("slab") is not None:
+        print("  slab measure: a packed slab over a void at %d of %d instants"
+              " (%s) from %g s: %.1f %%" % (
+                  round(res["slab"]*res["slabCount"]), res["slabCount"],
+                  res["slabSource"], res["t0"], 100*res["slab"]))
     print("  bed expansion (time-averaged eps_s < 0.05 above): %s m (initial 0.5 m)"
           % fmt(res, "expansion", "%.3f"))
     for x_cm in (3.4, 6.4):
@@ -302,8 +329,8 @@ def print_report(res, label):
 
 TABLE_HEAD = ("| run | deltaP / weight | deltaP amplitude [Pa] | max cell eps_s "
               "| 99th pct | min eps_g | bed expansion [m] | MAD 3.4 cm | MAD 6.4 cm "
-              "| wall s / sim s | diverged |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|")
+              "| slab [%] | wall s / sim s | diverged |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|")
 
 
 def table_row(res, label, wall, failure):
@@ -311,13 +338,14 @@ def table_row(res, label, wall, failure):
     per_sim = "-"
     if wall and res.get("endTime"):
         per_sim = "%.0f" % (wall/res["endTime"])
-    return "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+    slab = "-" if res.get("slab") is None else "%.0f" % (100*res["slab"])
+    return "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
         label, fmt(res, "dpRatio", "%.3f"), fmt(res, "dpAmplitude", "%.0f"),
         fmt(res, "maxCell", "%.3f"), fmt(res, "p99Cell", "%.3f"),
         fmt(res, "minGas", "%.3f"), fmt(res, "expansion", "%.3f"),
         "%.3f" % mad[("ours", 3.4)] if ("ours", 3.4) in mad else "-",
         "%.3f" % mad[("ours", 6.4)] if ("ours", 6.4) in mad else "-",
-        per_sim, failure or "no")
+        slab, per_sim, failure or "no")
 
 
 def plot(res, case, label):
@@ -400,8 +428,13 @@ def plot(res, case, label):
                     to_grid(field, cells, len(xs), len(ys))
                 im = ax.imshow(grid, origin="lower", extent=extent, vmin=0,
                                vmax=0.65, cmap="viridis", aspect="equal")
+                rows = None if field is None else slabs.slab_rows(grid)
+                for row, colour in zip(rows or (), ("r", "w")):
+                    ax.axhline(ys[row], color=colour, lw=0.8, ls="--")
                 ax.set_title("time average from %g s" % res["t0"]
-                             if field is None else "t = %s s" % name, fontsize=8)
+                             if field is None else "t = %s s%s" % (
+                                 name, ", slab (red) over void (white)"
+                                 if rows else ""), fontsize=7)
                 ax.set_xlabel("x [m]", fontsize=8)
                 ax.tick_params(labelsize=7)
             axes[0][0].set_ylabel("y [m]")
@@ -411,6 +444,9 @@ def plot(res, case, label):
                         dpi=90)
             plt.close(fig)
             names.append(os.path.join(case, "kuipersJet_%s_snapshots.png" % label))
+    if res.get("slabFlags"):
+        names.append(os.path.join(case, "kuipersJet_%s_slabs.png" % label))
+        slabs.plot_slabs(res["slabFlags"], names[-1], label)
     return names
 
 

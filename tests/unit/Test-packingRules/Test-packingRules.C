@@ -28,6 +28,7 @@ Description
       false): only eq 20. Case 1a input gives the eq 20 value
       (-0.1 0.35 0); Case 1b input (-0.5 0 0) is unchanged; Case 1b then
       1a input (0 -0.5 0) is unchanged; approach as above (1.75 -0.15 0)
+      reflection component: componentReflectionChecks.C
       reflection normal (only the component along dHat = dV/|dV|):
         approach as above: U' = U - 1.5*(Urel.x)x = (1.75 0.3 0)
         Case 1b: U = (-0.5 0.2 0), us = (-1 0 0), dV = (1 0 0):
@@ -64,6 +65,7 @@ Description
 #include "coloringFunctionRules.H"
 #include "sniderStressRules.H"
 #include "unitTest.H"
+#include "packingRulesChecks.H"
 
 using namespace Foam;
 using namespace Foam::unitTest;
@@ -102,9 +104,9 @@ bool rejects(const dictionary& dict, const word& keyword)
 
 dictionary colouringCoeffs
 (
-    const bool case1a = true,
-    const bool case1b = true,
-    const word& reflection = "vector"
+    const bool case1a,
+    const bool case1b,
+    const word& reflection
 )
 {
     dictionary dict;
@@ -391,6 +393,7 @@ int main(int argc, char *argv[])
     argList args(argc, argv, false, false, false);
 
     testColoringFunction();
+    testComponentReflection();
     testSnider();
 
     testBadValue<coloringFunctionRules>("coloringFunctionRules", colouringCoeffs(), "e1", 1.5);

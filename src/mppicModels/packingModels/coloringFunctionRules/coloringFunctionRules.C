@@ -33,25 +33,73 @@ Foam::coloringFunctionRules::coloringFunctionRules(const dictionary& coeffs)
     ),
     case1a_(coeffs.lookupOrDefault<bool>("case1a", true)),
     case1b_(coeffs.lookupOrDefault<bool>("case1b", true)),
-    normalOnly_(readReflection(coeffs))
+    reflection_(readReflection(coeffs))
 {}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-bool Foam::coloringFunctionRules::readReflection(const dictionary& coeffs)
+Foam::coloringFunctionRules::reflectionType
+Foam::coloringFunctionRules::readReflection(const dictionary& coeffs)
 {
     const word reflection(coeffs.lookupOrDefault<word>("reflection", "normal"));
 
-    if (reflection != "normal" && reflection != "vector")
+    if (reflection == "normal")
+    {
+        return reflectionType::normal;
+    }
+    if (reflection == "vector")
+    {
+        return reflectionType::vector;
+    }
+    if (reflection != "component")
     {
         FatalIOErrorInFunction(coeffs)
             << "Dictionary " << coeffs.name() << ", keyword reflection: "
-            << "value " << reflection << " is not one of (normal vector)"
-            << exit(FatalIOError);
+            << "value " << reflection << " is not one of "
+            << "(normal vector component)" << exit(FatalIOError);
+    }
+    return reflectionType::component;
+}
+
+
+Foam::scalar Foam::coloringFunctionRules::componentVelocity
+(
+    const scalar v,
+    const scalar u,
+    const scalar d,
+    const scalar g,
+    const bool closePacked
+) const
+{
+    scalar vNew = v;
+
+    if (v*u > 0)
+    {
+        // Parcel and pack move the same way: one catches up with the other
+        const bool catchesUp = v*d > 0 ? mag(u) > mag(v) : mag(v) > mag(u);
+
+        if (catchesUp)
+        {
+            vNew = u - e1_*(v - u);
+        }
+        else if (case1b_ && closePacked && v*d < 0)
+        {
+            vNew = e2_*v;
+        }
+    }
+    else if (u*d > 0)
+    {
+        // Head on
+        vNew = u - e1_*(v - u);
     }
 
-    return reflection == "normal";
+    if (case1a_ && closePacked && d*g < 0 && v*g > 0)
+    {
+        vNew = -e1_*v;
+    }
+
+    return vNew;
 }
 
 
@@ -66,6 +114,23 @@ Foam::vector Foam::coloringFunctionRules::correctedVelocity
     const bool closePacked
 ) const
 {
+    if (reflection_ == reflectionType::component)
+    {
+        vector Unew = U;
+        for (direction k = 0; k < vector::nComponents; ++k)
+        {
+            if (impulse[k] != 0)
+            {
+                Unew[k] =
+                    componentVelocity
+                    (
+                        U[k], uMean[k], impulse[k], g[k], closePacked
+                    );
+            }
+        }
+        return Unew;
+    }
+
     const vector Urel = U - uMean;
 
     // The part of a velocity that the rules change: all of it (eqs 20, 23
@@ -73,7 +138,7 @@ Foam::vector Foam::coloringFunctionRules::correctedVelocity
     const vector dHat = impulse/max(mag(impulse), VSMALL);
     auto changed = [&](const vector& v)
     {
-        return normalOnly_ ? (v & dHat)*dHat : v;
+        return reflection_ == reflectionType::normal ? (v & dHat)*dHat : v;
     };
 
     vector Unew = U;
