@@ -14,7 +14,10 @@ and prints, over t0 <= t <= end (default t0: 0.4 x end, after the start-up):
     - the mean upward force of the packing step over the weight,
       sum(m dU_y)/dt/(m g) (packingMonitor): where the weight goes that the
       gas does not carry (every cell of this 2-cell-deep box touches a
-      wall, so the monitor's wall part is all of it and is not shown).
+      wall, so the monitor's wall part is all of it and is not shown);
+    - the rest, held by the walls' rebounds (the distributor's: the side
+      walls are frictionless), from the cloud's momentum budget with its
+      vertical momentum at the written times nearest the window's ends.
 
 Usage:
     uniformFluidizationResults.py [--case DIR] [--from T0] [--label L]
@@ -25,6 +28,7 @@ Usage:
 import argparse
 import math
 import os
+import re
 import sys
 
 TABLE_HEAD = ("| run | window [s] | deltaP / weight | std | std error of mean "
@@ -82,6 +86,51 @@ def packing_force(rows, g=9.81):
     return sum(r[9] for r in rows)/duration/(rows[-1][2]*g)
 
 
+def lagrangian_field(path):
+    """Values of a written lagrangian field (uniform N{v} or a list)."""
+    text = open(path).read()
+    text = text[text.index("}", text.index("FoamFile")) + 1:]
+    m = re.search(r"(\d+)\s*\{([^}]*)\}", text)
+    if m and (text.find("(") < 0 or text.find("(") > m.start()):
+        value = [float(v) for v in m.group(2).strip("() \n").split()]
+        return [value]*int(m.group(1))
+    body = text[text.index("(") + 1:text.rindex(")")]
+    if "(" in body:
+        return [[float(v) for v in t.split()]
+                for t in re.findall(r"\(([^()]*)\)", body)]
+    return [[float(v)] for v in body.split()]
+
+
+def cloud_momentum(case, time):
+    """Vertical momentum of the cloud written at a time, kg m/s."""
+    d = os.path.join(case, time, "lagrangian", "kinematicCloud")
+    if not os.path.isdir(d):
+        return None
+    fields = [lagrangian_field(os.path.join(d, f))
+              for f in ("nParticle", "rho", "d", "U")]
+    return sum(n[0]*rho[0]*math.pi/6*dia[0]**3*u[1]
+               for n, rho, dia, u in zip(*fields))
+
+
+def wall_share(case, t0, t1, ratio, packing, mass, g=9.81):
+    """The rest of the weight, held by the walls (the distributor: the side
+    walls rebound without friction), from the cloud's momentum budget over
+    the window, d(P_y)/dt = (ratio + packing + walls - 1) M g, with the
+    momentum at the written times nearest the window's ends; None without
+    them."""
+    times = [d for d in os.listdir(case) if re.match(r"^[0-9.]+$", d)]
+    def nearest(t):
+        return min(times, key=lambda d: abs(float(d) - t)) if times else None
+    a, b = nearest(t0), nearest(t1)
+    if a is None or a == b:
+        return None
+    pa, pb = cloud_momentum(case, a), cloud_momentum(case, b)
+    if pa is None or pb is None:
+        return None
+    rate = (pb - pa)/(float(b) - float(a))/(mass*g)
+    return rate + 1 - ratio - packing
+
+
 def summary(case, t0=None):
     everything = pressure_ratio(case)
     if t0 is None:
@@ -93,9 +142,11 @@ def summary(case, t0=None):
     rows = [r for r in monitor(case) if r[0] >= t0 - 1e-12]
     max_cell = max(r[4] for r in rows) if rows else float("nan")
     packing = packing_force(rows)
+    walls = wall_share(case, t0, series[-1][0], mean, packing,
+                       rows[-1][2]) if rows else None
     return {"t0": t0, "t1": series[-1][0], "ratio": mean, "std": std,
             "error": error, "maxCell": max_cell, "packing": packing,
-            "series": everything}
+            "walls": walls, "series": everything}
 
 
 def plot(res, case, label):
@@ -147,9 +198,11 @@ def main():
     else:
         print("%s: (deltaP - gas head)/weight over %g-%g s = %.4f "
               "(std %.3f, standard error of the mean %.4f); packing force "
-              "%.4f x weight; max cell solids fraction %.3f"
+              "%.4f x weight; walls (distributor) %s x weight, by the "
+              "momentum budget; max cell solids fraction %.3f"
               % (args.label, res["t0"], res["t1"], res["ratio"], res["std"],
-                 res["error"], res["packing"], res["maxCell"]))
+                 res["error"], res["packing"], "-" if res["walls"] is None
+                 else "%.4f" % res["walls"], res["maxCell"]))
     if args.plot:
         plot(res, args.case, args.label)
     return 0

@@ -15,6 +15,7 @@ const Foam::Enum
 Foam::PackingModels::ColoringFunction<CloudType>::impulseTypeNames
 ({
     { impulseType::gradient, "gradient" },
+    { impulseType::faceGradient, "faceGradient" },
     { impulseType::neighbour, "neighbour" },
 });
 
@@ -90,6 +91,14 @@ Foam::PackingModels::ColoringFunction<CloudType>::packFor
         return pack;
     }
 
+    if (impulse_ == impulseType::faceGradient)
+    {
+        pack.impulse = -this->faceGradientAt(p);
+        pack.uMean = this->uMeanAt(p);
+        pack.cell = p.cell();
+        return pack;
+    }
+
     // A parcel that moved into its cell in this step and may not stay:
     // the pack is its own cell, along the way it came in
     const typename ParcelEntries<CloudType>::entry* entered =
@@ -129,7 +138,7 @@ template<class CloudType>
 Foam::tmp<Foam::scalarField>
 Foam::PackingModels::ColoringFunction<CloudType>::cellPackingValues() const
 {
-    if (!capacityLimit_)
+    if (!capacityLimit_ || impulse_ != impulseType::neighbour)
     {
         return MfixPackingModel<CloudType>::cellPackingValues();
     }

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "MfixPackingModel.H"
+#include "packingFaceGradient.H"
 #include "wallPolyPatch.H"
 #include "cellFaceGeometry.H"
 
@@ -244,6 +245,25 @@ Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
     }
 
     return ahead;
+}
+
+
+template<class CloudType>
+Foam::vector Foam::PackingModels::MfixPackingModel<CloudType>::faceGradientAt
+(
+    const typename CloudType::parcelType& p
+) const
+{
+    return
+        packingFaceGradient::at
+        (
+            this->owner().mesh(),
+            p.cell(),
+            p.position(),
+            cellValues_,
+            coupledValues_,
+            wallValue(cellValues_[p.cell()])
+        );
 }
 
 
