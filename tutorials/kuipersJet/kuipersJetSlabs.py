@@ -108,6 +108,7 @@ def plot_slabs(flags, path, label):
                  fontsize=9)
     ax.set_xlabel("t [s]")
     ax.set_ylabel("cell row")
+    ax.set_ylim(-2, 100)
     ax.legend(fontsize=7, loc="upper right")
     fig.tight_layout()
     fig.savefig(path, dpi=90)
