@@ -18,7 +18,9 @@
 #------------------------------------------------------------------------------
 runDir="${1:?usage: parallelSedimentation.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
-export OMPI_MCA_rmaps_base_oversubscribe=1
+# (ranks yield the core when they wait: without it, oversubscribed ranks
+# spin against each other and against any other load)
+export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1
 
 status=0
 for split in "2 1 (2 1 1)" "4 0.5 (2 2 1)"
