@@ -1,7 +1,8 @@
 #!/bin/bash
 # badInput-sniderCoeffs <runDir>: mfixSnider with pSolid -1, gamma -1,
 # slipVelocityFactor 1.5, capFactor 0.5, collisionDamping maybe,
-# meanFreePathCap perhaps, restWhereConverging sometimes and a misspelt
+# meanFreePathCap perhaps, restWhereConverging sometimes, capacityLimit
+# often and a misspelt
 # keyword (colisionDamping) -> FatalIOError naming the
 # keyword and the value (or the allowed range or keywords), exit status 1,
 # no crash (mppicPimpleFoam).
@@ -29,5 +30,6 @@ tryCoeffs "capFactor 0.5;" "capFactor" "0.5" "[1,"
 tryCoeffs "collisionDamping maybe;" "collisionDamping" "maybe"
 tryCoeffs "meanFreePathCap perhaps;" "meanFreePathCap" "perhaps"
 tryCoeffs "restWhereConverging sometimes;" "restWhereConverging" "sometimes"
+tryCoeffs "capacityLimit often;" "capacityLimit" "often"
 tryCoeffs "colisionDamping true;" "colisionDamping" "collisionDamping"
 exit $status

@@ -44,13 +44,14 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     (
         this->coeffs().lookupOrDefault("conserveMomentum", false)
     ),
-    entries_(),
     reactions_(),
-    holdSupportedPacks_
+    limit_
     (
-        this->coeffs().lookupOrDefault("holdSupportedPacks", true)
-    ),
-    support_(owner.mesh(), this->coeffs())
+        owner.mesh(),
+        this->coeffs(),
+        capacityLimit_
+     && this->coeffs().lookupOrDefault("holdSupportedPacks", true)
+    )
 {}
 
 
@@ -65,10 +66,8 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     impulse_(cm.impulse_),
     capacityLimit_(cm.capacityLimit_),
     conserveMomentum_(cm.conserveMomentum_),
-    entries_(),
     reactions_(),
-    holdSupportedPacks_(cm.holdSupportedPacks_),
-    support_(cm.support_)
+    limit_(cm.limit_)
 {}
 
 
@@ -102,7 +101,7 @@ Foam::PackingModels::ColoringFunction<CloudType>::packFor
     // A parcel that moved into its cell in this step and may not stay:
     // the pack is its own cell, along the way it came in
     const typename ParcelEntries<CloudType>::entry* entered =
-        entries_.find(p);
+        limit_.entries().find(p);
 
     if (entered)
     {
@@ -143,52 +142,12 @@ Foam::PackingModels::ColoringFunction<CloudType>::cellPackingValues() const
         return MfixPackingModel<CloudType>::cellPackingValues();
     }
 
-    tmp<scalarField> tvalues(new scalarField(entries_.startFraction()));
+    tmp<scalarField> tvalues(new scalarField(limit_.entries().startFraction()));
     for (scalar& value : tvalues.ref())
     {
         value = rules_.colour(value);
     }
     return tvalues;
-}
-
-
-template<class CloudType>
-Foam::boolList
-Foam::PackingModels::ColoringFunction<CloudType>::fullCells() const
-{
-    const fvMesh& mesh = this->owner().mesh();
-
-    scalarField volume(mesh.nCells(), Zero);
-    scalarField largest(mesh.nCells(), Zero);
-
-    for (const typename CloudType::parcelType& p : this->owner())
-    {
-        const label celli = entries_.finalCell(p);
-        if (celli >= 0)
-        {
-            const scalar v = p.nParticle()*p.volume();
-            volume[celli] += v;
-            largest[celli] = max(largest[celli], v);
-        }
-    }
-
-    // The refused parcels that go back to cells here from other processors
-    const scalarField& returned = entries_.returnedVolume();
-    if (returned.size())
-    {
-        volume += returned;
-        largest = max(largest, entries_.returnedLargest());
-    }
-
-    // No room for half of its largest parcel, as the capacity limit admits
-    boolList full(mesh.nCells());
-    forAll(full, celli)
-    {
-        const scalar room =
-            rules_.closePackFraction()*mesh.V()[celli] - volume[celli];
-        full[celli] = largest[celli] > 0 && room < 0.5*largest[celli];
-    }
-    return full;
 }
 
 
@@ -218,9 +177,9 @@ void Foam::PackingModels::ColoringFunction<CloudType>::beforeMotion()
     // are in the cloud: they were read from a written time. Record where
     // they are, which is where the uninterrupted run's last step left them
     // (the parcels injected since, of age 0, were not there then)
-    if (impulse_ == impulseType::neighbour && !entries_.hasRecords())
+    if (impulse_ == impulseType::neighbour)
     {
-        entries_.recordCells(this->owner(), true);
+        limit_.beforeMotion(this->owner());
     }
 }
 
@@ -233,34 +192,23 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
 {
     if (store && impulse_ == impulseType::neighbour)
     {
-        entries_.debug = debug;
-        entries_.update
+        limit_.setDebug(debug);
+        limit_.startStep
         (
             this->owner(),
             rules_.closePackFraction(),
             this->owner().db().time().deltaTValue()
         );
-
-        if (holdSupportedPacks_ && capacityLimit_)
-        {
-            support_.update(this->owner().g().value(), fullCells());
-
-            if (Pstream::parRun())
-            {
-                boolList heldCells(this->owner().mesh().nCells());
-                forAll(heldCells, celli)
-                {
-                    heldCells[celli] = support_.held(celli);
-                }
-                entries_.shareHeld(heldCells);
-            }
-        }
     }
     else
     {
         if (debug && impulse_ == impulseType::neighbour)
         {
-            entries_.reportGrowth(this->owner(), rules_.closePackFraction());
+            limit_.entries().reportGrowth
+            (
+                this->owner(),
+                rules_.closePackFraction()
+            );
         }
 
         // End of the packing step: the packs take their impulses back
@@ -274,10 +222,9 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
         );
 
         // Where each parcel now is
-        entries_.clear();
         if (impulse_ == impulseType::neighbour)
         {
-            entries_.recordCells(this->owner());
+            limit_.endStep(this->owner());
         }
     }
 
@@ -314,26 +261,17 @@ velocityCorrection
         // velocity the rules give, without a component into a cell that
         // refused the parcel: a move back across a cell is a displacement,
         // and kept as a velocity it would fling the parcel out of the pack
+        vector kept;
         const vector move =
-            entries_.limitedCorrection
+            limit_.move
             (
                 this->owner().mesh(),
                 p,
                 correction,
-                deltaT
+                pack.uMean,
+                deltaT,
+                kept
             );
-
-        vector kept =
-            entries_.keptVelocity(p, p.U() + correction, pack.uMean);
-
-        if
-        (
-            support_.held(entries_.finalCell(p))
-         || entries_.returnsToHeldCell(p)
-        )
-        {
-            kept = support_.heldVelocity(p.U(), kept);
-        }
 
         recordChange(p, kept - p.U(), pack.cell);
         p.U() = kept - move;

@@ -14,7 +14,8 @@ Foam::PackingModels::MfixSnider<CloudType>::keywords
 ({
     "closePackFraction", "pSolid", "gamma", "eps", "e1",
     "slipVelocityFactor", "capFactor", "meanFreePathCap",
-    "restWhereConverging", "collisionDamping"
+    "restWhereConverging", "collisionDamping", "capacityLimit",
+    "holdSupportedPacks", "supportPatches", "supportAngle"
 });
 
 
@@ -57,10 +58,21 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
     (
         this->coeffs().template lookupOrDefault<bool>("collisionDamping", false)
     ),
+    capacityLimit_
+    (
+        this->coeffs().template lookupOrDefault<bool>("capacityLimit", false)
+    ),
     stressGradient_(owner.mesh()),
     cellAlpha_(),
     damping_(rules_.e1(), rules_.closePackFraction()),
-    previousMeanVelocity_(nullptr)
+    previousMeanVelocity_(nullptr),
+    limit_
+    (
+        owner.mesh(),
+        this->coeffs(),
+        capacityLimit_
+     && this->coeffs().lookupOrDefault("holdSupportedPacks", false)
+    )
 {
     meanVelocity();
 }
@@ -75,10 +87,12 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
     MfixPackingModel<CloudType>(cm),
     rules_(cm.rules_),
     collisionDamping_(cm.collisionDamping_),
+    capacityLimit_(cm.capacityLimit_),
     stressGradient_(cm.owner().mesh()),
     cellAlpha_(),
     damping_(rules_.e1(), rules_.closePackFraction()),
-    previousMeanVelocity_(nullptr)
+    previousMeanVelocity_(nullptr),
+    limit_(cm.limit_)
 {}
 
 
@@ -159,9 +173,38 @@ void Foam::PackingModels::MfixSnider<CloudType>::storeMeanVelocity()
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
+void Foam::PackingModels::MfixSnider<CloudType>::beforeMotion()
+{
+    // On a restart: record where the parcels read from the written time
+    // are, which is where the uninterrupted run's last step left them
+    if (capacityLimit_)
+    {
+        limit_.beforeMotion(this->owner());
+    }
+}
+
+
+template<class CloudType>
 void Foam::PackingModels::MfixSnider<CloudType>::cacheFields(const bool store)
 {
     MfixPackingModel<CloudType>::cacheFields(store);
+
+    if (capacityLimit_)
+    {
+        if (store)
+        {
+            limit_.startStep
+            (
+                this->owner(),
+                rules_.closePackFraction(),
+                this->owner().db().time().deltaTValue()
+            );
+        }
+        else
+        {
+            limit_.endStep(this->owner());
+        }
+    }
 
     if (!store)
     {
@@ -222,6 +265,28 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
     if (collisionDamping_)
     {
         Unew = damping_.damped(Unew, celli, deltaT);
+    }
+
+    if (capacityLimit_)
+    {
+        // As coloringFunction's capacity limit (CapacityLimit): the
+        // parcel keeps no velocity into a cell that refused it relative to
+        // that cell's parcels (their mean of the previous step)
+        vector kept;
+        const vector move =
+            limit_.move
+            (
+                this->owner().mesh(),
+                p,
+                Unew - p.U(),
+                (*previousMeanVelocity_)[celli],
+                deltaT,
+                kept
+            );
+
+        this->recordVelocityChange(p, kept - p.U());
+        p.U() = kept - move;
+        return move;
     }
 
     const vector correction = Unew - p.U();

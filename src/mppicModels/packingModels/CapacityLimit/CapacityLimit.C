@@ -1,0 +1,160 @@
+/*---------------------------------------------------------------------------*\
+    mppicModels: MFiX-PIC dense-particle models for OpenFOAM
+    This file is part of the mppicModels project, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "CapacityLimit.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::CapacityLimit<CloudType>::CapacityLimit
+(
+    const fvMesh& mesh,
+    const dictionary& coeffs,
+    const bool holdSupportedPacks
+)
+:
+    holdSupportedPacks_(holdSupportedPacks),
+    entries_(),
+    support_(mesh, coeffs)
+{}
+
+
+template<class CloudType>
+Foam::CapacityLimit<CloudType>::CapacityLimit
+(
+    const CapacityLimit<CloudType>& cl
+)
+:
+    holdSupportedPacks_(cl.holdSupportedPacks_),
+    entries_(),
+    support_(cl.support_)
+{}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::boolList Foam::CapacityLimit<CloudType>::fullCells
+(
+    const CloudType& cloud,
+    const scalar closePackFraction
+) const
+{
+    const fvMesh& mesh = cloud.mesh();
+
+    scalarField volume(mesh.nCells(), Zero);
+    scalarField largest(mesh.nCells(), Zero);
+
+    for (const parcelType& p : cloud)
+    {
+        const label celli = entries_.finalCell(p);
+        if (celli >= 0)
+        {
+            const scalar v = p.nParticle()*p.volume();
+            volume[celli] += v;
+            largest[celli] = max(largest[celli], v);
+        }
+    }
+
+    // The refused parcels that go back to cells here from other processors
+    const scalarField& returned = entries_.returnedVolume();
+    if (returned.size())
+    {
+        volume += returned;
+        largest = max(largest, entries_.returnedLargest());
+    }
+
+    // No room for half of its largest parcel, as the entries are admitted
+    boolList full(mesh.nCells());
+    forAll(full, celli)
+    {
+        const scalar room = closePackFraction*mesh.V()[celli] - volume[celli];
+        full[celli] = largest[celli] > 0 && room < 0.5*largest[celli];
+    }
+    return full;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::CapacityLimit<CloudType>::beforeMotion(const CloudType& cloud)
+{
+    if (!entries_.hasRecords())
+    {
+        entries_.recordCells(cloud, true);
+    }
+}
+
+
+template<class CloudType>
+void Foam::CapacityLimit<CloudType>::startStep
+(
+    const CloudType& cloud,
+    const scalar closePackFraction,
+    const scalar deltaT
+)
+{
+    entries_.update(cloud, closePackFraction, deltaT);
+
+    if (!holdSupportedPacks_)
+    {
+        return;
+    }
+
+    support_.update(cloud.g().value(), fullCells(cloud, closePackFraction));
+
+    if (Pstream::parRun())
+    {
+        boolList heldCells(cloud.mesh().nCells());
+        forAll(heldCells, celli)
+        {
+            heldCells[celli] = support_.held(celli);
+        }
+        entries_.shareHeld(heldCells);
+    }
+}
+
+
+template<class CloudType>
+void Foam::CapacityLimit<CloudType>::endStep(const CloudType& cloud)
+{
+    entries_.clear();
+    entries_.recordCells(cloud);
+}
+
+
+template<class CloudType>
+Foam::vector Foam::CapacityLimit<CloudType>::move
+(
+    const fvMesh& mesh,
+    const parcelType& p,
+    const vector& dU,
+    const vector& uPack,
+    const scalar deltaT,
+    vector& kept
+) const
+{
+    const vector dX = entries_.limitedCorrection(mesh, p, dU, deltaT);
+
+    kept = entries_.keptVelocity(p, p.U() + dU, uPack);
+
+    if
+    (
+        holdSupportedPacks_
+     && (
+            support_.held(entries_.finalCell(p))
+         || entries_.returnsToHeldCell(p)
+        )
+    )
+    {
+        kept = support_.heldVelocity(p.U(), kept);
+    }
+
+    return dX;
+}
+
+
+// ************************************************************************* //
