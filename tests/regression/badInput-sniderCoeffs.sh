@@ -2,7 +2,8 @@
 # badInput-sniderCoeffs <runDir>: mfixSnider with pSolid -1, gamma -1,
 # slipVelocityFactor 1.5, capFactor 0.5, collisionDamping maybe,
 # meanFreePathCap perhaps, restWhereConverging sometimes, capacityLimit
-# often and a misspelt
+# often, holdSupportedPacks rarely, supportAngle 100, supportPatches
+# (nowhere) and a misspelt
 # keyword (colisionDamping) -> FatalIOError naming the
 # keyword and the value (or the allowed range or keywords), exit status 1,
 # no crash (mppicPimpleFoam).
@@ -31,5 +32,8 @@ tryCoeffs "collisionDamping maybe;" "collisionDamping" "maybe"
 tryCoeffs "meanFreePathCap perhaps;" "meanFreePathCap" "perhaps"
 tryCoeffs "restWhereConverging sometimes;" "restWhereConverging" "sometimes"
 tryCoeffs "capacityLimit often;" "capacityLimit" "often"
+tryCoeffs "holdSupportedPacks rarely;" "holdSupportedPacks" "rarely"
+tryCoeffs "supportAngle 100;" "supportAngle" "100" "(0, 90]"
+tryCoeffs "supportPatches (nowhere);" "supportPatches" "nowhere"
 tryCoeffs "colisionDamping true;" "colisionDamping" "collisionDamping"
 exit $status

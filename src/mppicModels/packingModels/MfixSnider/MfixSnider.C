@@ -60,7 +60,7 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
     ),
     capacityLimit_
     (
-        this->coeffs().template lookupOrDefault<bool>("capacityLimit", false)
+        this->coeffs().template lookupOrDefault<bool>("capacityLimit", true)
     ),
     stressGradient_(owner.mesh()),
     cellAlpha_(),
@@ -71,7 +71,7 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
         owner.mesh(),
         this->coeffs(),
         capacityLimit_
-     && this->coeffs().lookupOrDefault("holdSupportedPacks", false)
+     && this->coeffs().lookupOrDefault("holdSupportedPacks", true)
     )
 {
     meanVelocity();
