@@ -33,6 +33,15 @@ Description
        A parcel of row 1 at (0.125, 0.45, 0.05), U = (0 -2 0): grad_y =
        (0 - 9)/0.25 = -36 Pa/m (row 2 empty), dU_y = 1e-3*36/(2500*0.3) =
        4.8e-5 m/s, below the reflection (1.85 m/s): U'_y = -2 + 4.8e-5.
+       Our capacity limit (on by default): with the case's step of 1 s the
+       entering parcel crossed cell 0's top face in this step (its
+       displacement 1 m exceeds its 0.05 m from the face), and cell 0
+       started above close pack (0.62 > 0.6), so it takes no entrant: the
+       correction move takes the parcel back across y = 0.25 into cell 4
+       and not past cell 4's centre (0.05 <= dX_y <= 0.175), and it keeps
+       U'_y = 0.85 (away from cell 0). With capacityLimit false (MFiX 21.3
+       as is) the correction is U' - U = 1.85 and the parcel's velocity is
+       not touched; the same-step-mean check uses that model.
        The stress at the cap: tau(0.9) = tau(min(0.995, 0.69)) =
        100*0.69^3/(1e-7*0.31) = 1.05971e9 Pa.
 
@@ -219,16 +228,48 @@ void testLimiterAndMean(cloudType& cloud, const fvMesh& mesh)
     );
     checkClose("entering parcel: no x change", dEntering.x(), 0, 1e-12, 1);
 
-    const vector dRowOne = model->velocityCorrection(*rowOne, dt);
+    // Our capacity limit (on by default): the parcel crossed into cell 0
+    // through its top face within the case's step (1 s), and cell 0
+    // started above close pack (0.62), so it takes no entrant: the
+    // correction move takes the parcel back into cell 4, the cell it came
+    // from, and it keeps the turned velocity, which leaves cell 0
+    const label backCell =
+        mesh.findCell(entering->position() + dt*dEntering);
+    checkTrue
+    (
+        "refused entrant: the correction move ends in cell 4 (ends in "
+      + Foam::name(backCell) + ")",
+        backCell == 4
+    );
+    checkTrue
+    (
+        "refused entrant: the move crosses the face at y 0.25 and stops "
+        "short of cell 4's centre (0.05 <= dX_y <= 0.175; dX_y "
+      + Foam::name(dt*dEntering.y()) + ")",
+        dt*dEntering.y() >= 0.05 && dt*dEntering.y() <= 0.175
+    );
+
+    // MFiX 21.3 as is (capacityLimit false): the correction is U' - U and
+    // the parcel's velocity is not touched
+    dictionary asIs(subModels);
+    asIs.subDict("mfixSniderCoeffs").add("capacityLimit", false);
+    autoPtr<PackingModel<cloudType>> mfix
+    (
+        PackingModel<cloudType>::New(asIs, cloud)
+    );
+    mfix->cacheFields(true);
+    entering->U() = vector(0, -1, 0);
+    const vector dAsIs = mfix->velocityCorrection(*entering, dt);
+    checkClose("capacityLimit false: dU_y = 0.85 + 1", dAsIs.y(), 1.85, 1e-12);
     checkClose
     (
-        "row-1 parcel: impulse dt*36/(2500*0.3)", dRowOne.y(),
-        dt*36/(2500*0.3), 1e-9
+        "capacityLimit false: the velocity is not touched",
+        entering->U().y(), -1, 1e-12
     );
 
     // The mean of this step's own velocities leaves the block alone
     Us[0] = vector(0, -1, 0);
-    const vector dSameStep = model->velocityCorrection(*entering, dt);
+    const vector dSameStep = mfix->velocityCorrection(*entering, dt);
     checkClose
     (
         "with this step's mean (-1): no correction", dSameStep.y(), 0,
