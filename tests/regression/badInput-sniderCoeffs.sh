@@ -3,7 +3,7 @@
 # slipVelocityFactor 1.5, capFactor 0.5, collisionDamping maybe,
 # meanFreePathCap perhaps, restWhereConverging sometimes, capacityLimit
 # often, holdSupportedPacks rarely, supportAngle 100, supportPatches
-# (nowhere) and a misspelt
+# (nowhere), conserveMomentum perhaps and a misspelt
 # keyword (colisionDamping) -> FatalIOError naming the
 # keyword and the value (or the allowed range or keywords), exit status 1,
 # no crash (mppicPimpleFoam).
@@ -35,5 +35,6 @@ tryCoeffs "capacityLimit often;" "capacityLimit" "often"
 tryCoeffs "holdSupportedPacks rarely;" "holdSupportedPacks" "rarely"
 tryCoeffs "supportAngle 100;" "supportAngle" "100" "(0, 90]"
 tryCoeffs "supportPatches (nowhere);" "supportPatches" "nowhere"
+tryCoeffs "conserveMomentum perhaps;" "conserveMomentum" "perhaps"
 tryCoeffs "colisionDamping true;" "colisionDamping" "collisionDamping"
 exit $status

@@ -15,7 +15,8 @@ Foam::PackingModels::MfixSnider<CloudType>::keywords
     "closePackFraction", "pSolid", "gamma", "eps", "e1",
     "slipVelocityFactor", "capFactor", "meanFreePathCap",
     "restWhereConverging", "collisionDamping", "capacityLimit",
-    "holdSupportedPacks", "supportPatches", "supportAngle"
+    "holdSupportedPacks", "supportPatches", "supportAngle",
+    "conserveMomentum"
 });
 
 
@@ -72,7 +73,15 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
         this->coeffs(),
         capacityLimit_
      && this->coeffs().lookupOrDefault("holdSupportedPacks", true)
-    )
+    ),
+    conserveMomentum_
+    (
+        this->coeffs().template lookupOrDefault<bool>
+        (
+            "conserveMomentum", false
+        )
+    ),
+    reactions_()
 {
     meanVelocity();
 }
@@ -92,7 +101,9 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
     cellAlpha_(),
     damping_(rules_.e1(), rules_.closePackFraction()),
     previousMeanVelocity_(nullptr),
-    limit_(cm.limit_)
+    limit_(cm.limit_),
+    conserveMomentum_(cm.conserveMomentum_),
+    reactions_()
 {}
 
 
@@ -170,6 +181,38 @@ void Foam::PackingModels::MfixSnider<CloudType>::storeMeanVelocity()
 }
 
 
+template<class CloudType>
+Foam::label Foam::PackingModels::MfixSnider<CloudType>::packCell
+(
+    const typename CloudType::parcelType& p,
+    const vector& tauGrad
+) const
+{
+    // The neighbour across the face of the parcel's cell that the stress
+    // gradient points at most directly: where the denser solids are
+    const fvMesh& mesh = this->owner().mesh();
+    const label celli = p.cell();
+
+    scalar best = 0;
+    label pack = -1;
+    for (const label facei : mesh.cells()[celli])
+    {
+        const bool own = mesh.faceOwner()[facei] == celli;
+        const vector& Sf = mesh.faceAreas()[facei];
+        const scalar along = (own ? 1 : -1)*(Sf & tauGrad)/mag(Sf);
+        if (along > best)
+        {
+            best = along;
+            pack =
+                mesh.isInternalFace(facei)
+              ? (own ? mesh.faceNeighbour()[facei] : mesh.faceOwner()[facei])
+              : -1;
+        }
+    }
+    return pack;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -208,6 +251,16 @@ void Foam::PackingModels::MfixSnider<CloudType>::cacheFields(const bool store)
 
     if (!store)
     {
+        // The packs take the opposite of the impulses they gave, before
+        // the mean of the final velocities is taken
+        reactions_.apply
+        (
+            this->owner(),
+            [this](const typename CloudType::parcelType& p, const vector& dU)
+            {
+                this->recordVelocityChange(p, dU);
+            }
+        );
         storeMeanVelocity();
         previousMeanVelocity_ = nullptr;
         stressGradient_.clear();
@@ -262,18 +315,24 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
             Unew, tauGrad, cellAlpha_[celli], 0.5*p.d(), deltaT
         );
 
+    // The stress's share of the change (limiter, travel cap), before the
+    // damping, which relaxes toward the cell's own mean
+    const vector dStress = Unew - p.U();
+
     if (collisionDamping_)
     {
         Unew = damping_.damped(Unew, celli, deltaT);
     }
+
+    vector kept = Unew;
+    vector move = Unew - p.U();
 
     if (capacityLimit_)
     {
         // As coloringFunction's capacity limit (CapacityLimit): the
         // parcel keeps no velocity into a cell that refused it relative to
         // that cell's parcels (their mean of the previous step)
-        vector kept;
-        const vector move =
+        move =
             limit_.move
             (
                 this->owner().mesh(),
@@ -283,16 +342,34 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
                 deltaT,
                 kept
             );
-
-        this->recordVelocityChange(p, kept - p.U());
-        p.U() = kept - move;
-        return move;
     }
 
-    const vector correction = Unew - p.U();
+    if (conserveMomentum_)
+    {
+        // The pack that turned the parcel takes the opposite impulse at
+        // the end of the step: the cell that refused it, else the denser
+        // neighbour the stress gradient points at (none at a wall: the
+        // wall takes it)
+        const typename ParcelEntries<CloudType>::entry* entered =
+            capacityLimit_ ? limit_.entries().find(p) : nullptr;
+        const bool refused = entered && !entered->admitted;
 
-    this->recordVelocityChange(p, correction);
-    return correction;
+        const vector dPack = kept - Unew + dStress;
+        const label pack = refused ? celli : packCell(p, tauGrad);
+        if (pack >= 0 && magSqr(dPack) > 0)
+        {
+            reactions_.record(p, pack, dPack);
+        }
+    }
+
+    this->recordVelocityChange(p, kept - p.U());
+
+    if (capacityLimit_)
+    {
+        // OpenFOAM adds the move to the velocity after the correction move
+        p.U() = kept - move;
+    }
+    return move;
 }
 
 
