@@ -194,26 +194,13 @@ Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
 
     // The face the parcel moves toward most directly
     neighbourState ahead;
-    label towardFace = -1;
-    scalar bestApproach = 0;
-
-    for (const label facei : mesh.cells()[celli])
-    {
-        const vector n = cellFaceGeometry::outwardNormal(mesh, celli, facei);
-
-        const scalar approach = p.U() & n;
-        if (approach > bestApproach)
-        {
-            bestApproach = approach;
-            towardFace = facei;
-            ahead.normal = n;
-        }
-    }
+    const label towardFace = cellFaceGeometry::faceToward(mesh, celli, p.U());
 
     if (towardFace < 0)
     {
         return ahead;
     }
+    ahead.normal = cellFaceGeometry::outwardNormal(mesh, celli, towardFace);
 
     if (mesh.isInternalFace(towardFace))
     {

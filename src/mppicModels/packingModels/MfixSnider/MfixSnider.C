@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "MfixSnider.H"
+#include "cellFaceGeometry.H"
 #include "zeroGradientFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
@@ -192,24 +193,12 @@ Foam::label Foam::PackingModels::MfixSnider<CloudType>::packCell
     // gradient points at most directly: where the denser solids are
     const fvMesh& mesh = this->owner().mesh();
     const label celli = p.cell();
+    const label facei = cellFaceGeometry::faceToward(mesh, celli, tauGrad);
 
-    scalar best = 0;
-    label pack = -1;
-    for (const label facei : mesh.cells()[celli])
-    {
-        const bool own = mesh.faceOwner()[facei] == celli;
-        const vector& Sf = mesh.faceAreas()[facei];
-        const scalar along = (own ? 1 : -1)*(Sf & tauGrad)/mag(Sf);
-        if (along > best)
-        {
-            best = along;
-            pack =
-                mesh.isInternalFace(facei)
-              ? (own ? mesh.faceNeighbour()[facei] : mesh.faceOwner()[facei])
-              : -1;
-        }
-    }
-    return pack;
+    return
+        facei >= 0 && mesh.isInternalFace(facei)
+      ? cellFaceGeometry::cellAcross(mesh, celli, facei)
+      : -1;
 }
 
 
