@@ -22,15 +22,19 @@ voidage factor of eq 7,  u_r(eg) = g*(rho_p - rho_g)*d^2/(18*mu)*eg^3.65:
             still carries the hindered-settling flux es*eg*u_r(eg*);
   filling, packed bed at rest (no solids flux through a bed on a wall):
             y = t*es0*eg0*u_r(eg0)/(es* - es0)
-  settling from rest: the parcels start at rest, and a parcel of the
-  suspension (OpenFOAM's equation, no added mass: dv/dt = g' - v/tau with
-  the return flow of the liquid, v = -eg0*u_r at equilibrium) reaches it as
-  1 - exp(-t/tau), tau = rho_p*d^2/(18*mu)*eg0^3.65*eg0, so that the front
-  lags eq 6 by eg0*u_r0*tau*(1 - exp(-t/tau)):
-            y = y0 - eg0*u_r0*(t - tau*(1 - exp(-t/tau)))
+  settling from the parcels' start velocity v0 (U0 of the injection in
+  constant/kinematicCloudProperties; 0, at rest, as the seed poses it): a
+  parcel of the suspension (OpenFOAM's equation, no added mass:
+  dv/dt = g' - v/tau with the return flow of the liquid, v = -eg0*u_r0 at
+  equilibrium) relaxes from v0 with tau = rho_p*d^2/(18*mu)*eg0^3.65*eg0:
+            y = y0 - eg0*u_r0*t + (v0 + eg0*u_r0)*tau*(1 - exp(-t/tau))
+  From rest the front lags eq 6 by eg0*u_r0*tau*(1 - exp(-t/tau)); started
+  at the hindered velocity (./Allrun ... moving), v0 = -eg0*u_r0, it is
+  eq 6 itself, the state eq 6 assumes from t = 0;
 and MFiX-PIC's fronts (the seed's tables 3 and 4).
+--hindered-velocity ES0 prints eg0*u_r(eg0) [m/s] (Allrun's start velocity).
 Prints the table row; --check: exit 1 unless both fronts are within the
-tolerance of the reference: --reference exact (default: settling from rest,
+tolerance of the reference: --reference exact (default: settling from the start,
 filling with the bed at rest, tolerance 0.005 m by default) or seed (eqs 6
 and 8, tolerance 0.010 m by default); --plot: settlingShocks_<es0>.png.
 """
@@ -53,16 +57,24 @@ def slip(eg):
     return G*(RHO_P - RHO_G)*D_P**2/(18*MU)*eg**3.65
 
 
-def references(es0, y0, t):
+def references(es0, y0, t, v0=0.0):
     eg0, egp = 1 - es0, 1 - CLOSE_PACK
     settling = y0 - t*eg0*slip(eg0)
     filling = -t*(CLOSE_PACK*egp*slip(egp) - es0*eg0*slip(eg0)) \
         / (CLOSE_PACK - es0)
     filling_at_rest = t*es0*eg0*slip(eg0)/(CLOSE_PACK - es0)
     tau = RHO_P*D_P**2/(18*MU)*eg0**3.65*eg0
-    settling_from_rest = \
-        y0 - eg0*slip(eg0)*(t - tau*(1 - math.exp(-t/tau)))
-    return settling, filling, filling_at_rest, settling_from_rest
+    settling_from_start = \
+        settling + (v0 + eg0*slip(eg0))*tau*(1 - math.exp(-t/tau))
+    return settling, filling, filling_at_rest, settling_from_start
+
+
+def start_velocity(case):
+    """The vertical component of the injection's U0 (0 if absent)."""
+    text = open(os.path.join(case, "constant",
+                             "kinematicCloudProperties")).read()
+    m = re.search(r"\n\s*U0\s+\(\s*(\S+)\s+(\S+)\s+(\S+)\s*\)", text)
+    return float(m.group(2)) if m else 0.0
 
 
 def read_internal(path):
@@ -124,7 +136,7 @@ def plot(ys, profile, es0, fronts, refs, path):
     ax.axhline(refs[2], color="tab:green", ls=":", lw=1,
                label="filling, bed at rest %.4f m" % refs[2])
     ax.axhline(refs[3], color="tab:purple", ls=":", lw=1,
-               label="settling from rest %.4f m" % refs[3])
+               label="settling from the start %.4f m" % refs[3])
     if es0 in MFIX_PIC:
         for v in MFIX_PIC[es0]:
             ax.plot([0.02], [v], "o", mfc="none", color="gray")
@@ -148,18 +160,30 @@ def main():
     parser.add_argument("--tolerance", type=float)
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--plot", action="store_true")
+    parser.add_argument("--hindered-velocity", type=float, metavar="ES0")
     args = parser.parse_args()
+    if args.hindered_velocity is not None:
+        es0 = args.hindered_velocity
+        if not 0 < es0 < CLOSE_PACK:
+            print("--hindered-velocity %g: not in (0, %g)"
+                  % (es0, CLOSE_PACK), file=sys.stderr)
+            return 2
+        print("%.6g" % ((1 - es0)*slip(1 - es0)))
+        return 0
 
     es0, y0 = seeding(args.case)
     t = float(args.time)
     ys, profile = layer_profile(args.case, args.time)
     settling = crossing(ys, profile, es0/2, from_top=True)
     filling = crossing(ys, profile, (CLOSE_PACK + es0)/2, from_top=False)
-    refs = references(es0, y0, t)
+    v0 = start_velocity(args.case)
+    refs = references(es0, y0, t, v0)
     mfix = MFIX_PIC.get(round(es0, 2), (float("nan"), float("nan")))
 
     print("eps_s0 | front | ours [m] | eqs 6/8 [m] | ours - ref [m] | "
-          "from rest / bed at rest [m] | ours - that [m] | MFiX-PIC [m]")
+          "from the start / bed at rest [m] | ours - that [m] | "
+          "MFiX-PIC [m]")
+    print("start velocity of the parcels %+.4f m/s" % v0)
     print("%.2f | settling | %.4f | %.4f | %+.4f | %.4f | %+.4f | %.3f"
           % (es0, settling, refs[0], settling - refs[0], refs[3],
              settling - refs[3], mfix[0]))
@@ -179,7 +203,7 @@ def main():
         seed = args.reference == "seed"
         tol = args.tolerance or (0.010 if seed else 0.005)
         targets = ((refs[0], "eq 6"), (refs[1], "eq 8")) if seed else \
-            ((refs[3], "from rest"), (refs[2], "bed at rest"))
+            ((refs[3], "from the start"), (refs[2], "bed at rest"))
         for (name, ours), (ref, what) in zip(
                 (("settling", settling), ("filling", filling)), targets):
             good = abs(ours - ref) <= tol
