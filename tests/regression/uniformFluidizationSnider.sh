@@ -2,21 +2,26 @@
 #------------------------------------------------------------------------------
 # uniformFluidizationSnider <runDir>
 # tutorials/validation/uniformFluidization with mfixSnider (-packing
-# mfixSnider: MFiX-PIC's Snider stress, slip to the previous step's mean
-# solids velocity, slip factor 0.9, MFiX's collision damping, and by
-# default our capacity limit and held packs) for 2 s (about 2 minutes).
+# mfixSnider: MFiX-PIC's Snider stress, and the gas, on the solids
+# fraction deposited with its linear hat (averagingMethod linearHat,
+# solidsFractionFrom averaging), slip to the previous step's mean solids
+# velocity,
+# slip factor 0.9, MFiX's collision damping, and by default our capacity
+# limit and held packs) for 2 s (about 2 minutes).
 # Before mfixSnider slipped against the mean of the step's own velocities,
 # this bed collapsed onto the distributor (cell solids fraction 5-6) and the
 # gas carried 0.049 of it; before the capacity limit its cells reached 1.20.
 # Checks:
-#   - the time-mean of (deltaP - gas head)/(m g/A) over 1.2-2 s at least
-#     0.95, m g/A = 1765.8 Pa (measured when written: 0.9686; without the
-#     capacity limit 0.987, with cells to 1.20);
+#   - the time-mean of (deltaP - gas head)/(m g/A) over 1.2-2 s between
+#     0.90 (issue 18's figure) and 1.10, m g/A = 1765.8 Pa (measured when
+#     written: 1.0243; over 1.2-6 s 1.021; the collapsed bed gave 0.049,
+#     the stress on the cell counts 0.966, a softer stress (Ps 10) whose
+#     refusals push the bed down 1.26: README);
 #   - 7680 parcels and the cloud mass 0.18 kg (to 1e-9) at every step;
 #   - the largest cell solids fraction at every step at most close pack
 #     plus half a parcel, 0.6 + 0.075/2 = 0.6375, inside the issue's bound
 #     max(1.15 x 0.6, 0.6 + one parcel 0.075) = 0.69 (capacityLimit false
-#     gives 1.20: the check can fail).
+#     gives 1.73 within 2 s on this deposit: the check can fail).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: uniformFluidizationSnider.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -36,8 +41,9 @@ def check(ok, what):
     print(("PASS " if ok else "FAIL ") + what)
     failures += not ok
 res = u.summary(".", 1.2)
-check(res["ratio"] >= 0.95,
-      "(deltaP - gas head)/weight over 1.2-2 s %.4f >= 0.95" % res["ratio"])
+check(0.90 <= res["ratio"] <= 1.10,
+      "(deltaP - gas head)/weight over 1.2-2 s %.4f in [0.90, 1.10]"
+      % res["ratio"])
 mon = u.monitor(".")
 check(all(r[1] == 7680 for r in mon), "7680 parcels at every step")
 check(all(abs(r[2]/0.18 - 1) < 1e-9 for r in mon), "cloud mass 0.18 kg at every step")
