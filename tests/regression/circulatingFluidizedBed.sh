@@ -21,7 +21,8 @@
 #   - at every write time, in every cell: solids fraction (cell values, the
 #     field the packing model uses: averagingMethod basic) at most
 #     max(1.05 x 0.6, 0.6 + V_parcel/V_cell), V_parcel that of a seeded
-#     parcel (CORRECTIONS.md: the one-parcel bound on cell-based values);
+#     parcel (docs/VALIDATION.md, "Conventions": the one-parcel bound on
+#     cell-based values);
 #     at every step the monitor's largest cell value at most
 #     0.6 + V_parcel/(smallest cell);
 #   - no parcel crossed more than one cell in a step (nFastParcels 0);

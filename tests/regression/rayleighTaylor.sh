@@ -6,7 +6,7 @@
 # 0.7 s (about 1 minute). A particle-laden gas (solids fraction 0.2) over
 # clear gas (1 kg/m3) mixes in a layer that grows as h = alpha A g t^2 with
 # alpha between 0.05 and 0.07 (seed 2, section 3.1). The Atwood number of
-# the mixture, by hand (CORRECTIONS.md):
+# the mixture, by hand (docs/VALIDATION.md, "Conventions"):
 #   rho_mix = 0.8*1 + 0.2*5 = 1.8 kg/m3,  A = (1.8 - 1)/(1.8 + 1) = 0.285714
 # Checks:
 #   - the case's Atwood number is that hand value;

@@ -15,8 +15,9 @@ velocity, g tau (1 - rho_g/rho_p) for tau = 1/100 s: 0.065 m/s at
 rho_p 3), and at its top a clear layer opens under the outlet: the
 half-width does not depend on that drift, the fronts' distances from y0
 (also printed) do.
-The Atwood number of the mixture set up (CORRECTIONS.md), with the gas
-density rho_g and the particle density rho_p of the case:
+The Atwood number of the mixture set up (docs/VALIDATION.md,
+"Conventions"), with the gas density rho_g and the particle density rho_p
+of the case:
     rho_mix = (1 - eps0) rho_g + eps0 rho_p,  A = (rho_mix - rho_g)/(rho_mix + rho_g)
 alpha is fitted to h = alpha A g t^2 by least squares through the origin
 over the self-similar range: from the first time h exceeds 4 cells
