@@ -180,10 +180,10 @@ def main():
     refs = references(es0, y0, t, v0)
     mfix = MFIX_PIC.get(round(es0, 2), (float("nan"), float("nan")))
 
+    print("start velocity of the parcels %+.4f m/s" % v0)
     print("eps_s0 | front | ours [m] | eqs 6/8 [m] | ours - ref [m] | "
           "from the start / bed at rest [m] | ours - that [m] | "
           "MFiX-PIC [m]")
-    print("start velocity of the parcels %+.4f m/s" % v0)
     print("%.2f | settling | %.4f | %.4f | %+.4f | %.4f | %+.4f | %.3f"
           % (es0, settling, refs[0], settling - refs[0], refs[3],
              settling - refs[3], mfix[0]))
