@@ -107,6 +107,7 @@ void testGradient(const fvMesh& mesh)
 
     scalarField linear(mesh.nCells());
     scalarField quadratic(mesh.nCells());
+    const scalarList noGhosts;   // a serial run: the kernel has no ghosts
     forAll(C, celli)
     {
         linear[celli] = 3 + 2*C[celli].x() - 5*C[celli].y();
@@ -125,7 +126,7 @@ void testGradient(const fvMesh& mesh)
         const vector g =
             kernel.extrapolatedGradient
             (
-                linear, pt.first(), mesh.findCell(pt.first())
+                linear, noGhosts, pt.first(), mesh.findCell(pt.first())
             );
         const string what("linear field, " + pt.second() + ": ");
         checkClose(what + "d/dx", g.x(), 2, 1e-12);
@@ -138,7 +139,10 @@ void testGradient(const fvMesh& mesh)
     {
         const point pt(0.3, y, 0.05);
         const vector g =
-            kernel.extrapolatedGradient(quadratic, pt, mesh.findCell(pt));
+            kernel.extrapolatedGradient
+            (
+                quadratic, noGhosts, pt, mesh.findCell(pt)
+            );
         checkClose
         (
             "y^2 at y = " + Foam::name(y) + ": bracketing centres",

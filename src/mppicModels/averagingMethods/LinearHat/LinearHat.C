@@ -4,6 +4,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "LinearHat.H"
+#include "fvcGrad.H"
+#include "zeroGradientFvPatchField.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -15,8 +17,12 @@ Foam::AveragingMethods::LinearHat<Type>::LinearHat
     const fvMesh& mesh
 )
 :
-    Basic<Type>(io, dict, mesh),
-    kernel_(linearHatKernel::New(mesh))
+    AveragingMethod<Type>(io, dict, mesh, labelList(1, mesh.nCells())),
+    kernel_(linearHatKernel::New(mesh)),
+    data_(FieldField<Field, Type>::operator[](0)),
+    dataGrad_(mesh.nCells()),
+    ghostDeposits_(kernel_.nGhosts(), Zero),
+    ghostValues_(kernel_.nGhosts(), Zero)
 {}
 
 
@@ -26,9 +32,41 @@ Foam::AveragingMethods::LinearHat<Type>::LinearHat
     const LinearHat<Type>& am
 )
 :
-    Basic<Type>(am),
-    kernel_(am.kernel_)
+    AveragingMethod<Type>(am),
+    kernel_(am.kernel_),
+    data_(FieldField<Field, Type>::operator[](0)),
+    dataGrad_(am.dataGrad_),
+    ghostDeposits_(am.ghostDeposits_),
+    ghostValues_(am.ghostValues_)
 {}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Type>
+void Foam::AveragingMethods::LinearHat<Type>::updateGrad()
+{
+    kernel_.ghostValues(data_, ghostValues_);
+
+    // The gradient as basic computes it: zero gradient at the boundaries
+    GeometricField<Type, fvPatchField, volMesh> cellData
+    (
+        IOobject
+        (
+            "LinearHat::cellData",
+            this->mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        this->mesh_,
+        dimensioned<Type>(dimless, Zero),
+        zeroGradientFvPatchField<Type>::typeName
+    );
+    cellData.primitiveFieldRef() = data_;
+    cellData.correctBoundaryConditions();
+    dataGrad_ = fvc::grad(cellData)->primitiveField();
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -43,7 +81,8 @@ void Foam::AveragingMethods::LinearHat<Type>::add
 {
     kernel_.deposit
     (
-        cellDensity(),
+        data_,
+        ghostDeposits_,
         position(coordinates, tetIs),
         tetIs.cell(),
         value
@@ -60,10 +99,50 @@ Type Foam::AveragingMethods::LinearHat<Type>::interpolate
 {
     return kernel_.interpolate
     (
-        FieldField<Field, Type>::operator[](0),
+        data_,
+        ghostValues_,
         position(coordinates, tetIs),
         tetIs.cell()
     );
+}
+
+
+template<class Type>
+typename Foam::AveragingMethods::LinearHat<Type>::TypeGrad
+Foam::AveragingMethods::LinearHat<Type>::interpolateGrad
+(
+    const barycentric& coordinates,
+    const tetIndices& tetIs
+) const
+{
+    return dataGrad_[tetIs.cell()];
+}
+
+
+template<class Type>
+void Foam::AveragingMethods::LinearHat<Type>::average()
+{
+    kernel_.addGhostDeposits(data_, ghostDeposits_);
+    AveragingMethod<Type>::average();
+}
+
+
+template<class Type>
+void Foam::AveragingMethods::LinearHat<Type>::average
+(
+    const AveragingMethod<scalar>& weight
+)
+{
+    kernel_.addGhostDeposits(data_, ghostDeposits_);
+    AveragingMethod<Type>::average(weight);
+}
+
+
+template<class Type>
+Foam::tmp<Foam::Field<Type>>
+Foam::AveragingMethods::LinearHat<Type>::primitiveField() const
+{
+    return tmp<Field<Type>>(data_);
 }
 
 

@@ -6,6 +6,7 @@
 #include "linearHatKernel.H"
 #include "cellFaceGeometry.H"
 #include "cyclicPolyPatch.H"
+#include "processorPolyPatch.H"
 #include "hexMatcher.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -45,6 +46,13 @@ Foam::label Foam::linearHatKernel::cellAcross
 
     const label patchi = mesh.boundaryMesh().whichPatch(facei);
     const polyPatch& pp = mesh.boundaryMesh()[patchi];
+
+    if (patchGhostStart_[patchi] >= 0)
+    {
+        const label patchFacei = facei - pp.start();
+        delta = patchDeltas[patchi][patchFacei];
+        return mesh.nCells() + patchGhostStart_[patchi] + patchFacei;
+    }
 
     if (!isA<cyclicPolyPatch>(pp))
     {
@@ -141,7 +149,8 @@ Foam::linearHatKernel::facePairs(const label celli) const
 void Foam::linearHatKernel::addHexCell
 (
     const label celli,
-    const List<vectorField>& patchDeltas
+    const List<vectorField>& patchDeltas,
+    label& nStopped
 )
 {
     const FixedList<label, 6> faces = facePairs(celli);
@@ -172,17 +181,61 @@ void Foam::linearHatKernel::addHexCell
             entry/9 - 1, (entry/3)%3 - 1, entry%3 - 1
         });
 
+        block_[blockSize*celli + entry] =
+            blockCell(celli, steps, normals, patchDeltas, nStopped);
+    }
+}
+
+
+Foam::label Foam::linearHatKernel::blockCell
+(
+    const label celli,
+    const FixedList<label, 3>& steps,
+    const FixedList<vector, 6>& normals,
+    const List<vectorField>& patchDeltas,
+    label& nStopped
+) const
+{
+    const label nCells = mesh().nCells();
+
+    // The orders of the three directions, the serial one (0 1 2) first
+    static const label orders[6][3] =
+        {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+
+    label stopped = -1;
+    for (const auto& order : orders)
+    {
         label cellk = celli;
-        for (label i = 0; i < 3; ++i)
+        bool atGhost = false;
+        for (const label i : order)
         {
-            if (steps[i] != 0)
+            if (steps[i] == 0)
             {
-                const vector& dir = normals[2*i + (steps[i] > 0 ? 0 : 1)];
-                cellk = stepToward(cellk, dir, patchDeltas);
+                continue;
+            }
+            if (atGhost)
+            {
+                // A ghost has no faces here: no further step from it
+                atGhost = false;
+                cellk = -1;
+                break;
+            }
+            const vector& dir = normals[2*i + (steps[i] > 0 ? 0 : 1)];
+            cellk = stepToward(cellk, dir, patchDeltas);
+            atGhost = cellk >= nCells;
+            if (atGhost && stopped < 0)
+            {
+                stopped = cellk;
             }
         }
-        block_[blockSize*celli + entry] = cellk;
+        if (cellk >= 0)
+        {
+            return cellk;
+        }
     }
+
+    ++nStopped;
+    return stopped;
 }
 
 
@@ -207,28 +260,52 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
     MeshObject<fvMesh, GeometricMeshObject, linearHatKernel>(mesh),
     block_(blockSize*mesh.nCells()),
     towardFace_(facesPerCell*mesh.nCells()),
-    hexahedral_(mesh.nCells(), true)
+    hexahedral_(mesh.nCells(), true),
+    ghostPatches_(),
+    patchGhostStart_(mesh.boundary().size(), -1),
+    nGhosts_(0),
+    ghostVolumes_()
 {
-    // Cell-to-cell vectors across the cyclic patches
+    setGhostSlots();
+
+    // Cell-to-cell vectors across the cyclic and processor patches
     List<vectorField> patchDeltas(mesh.boundary().size());
     forAll(mesh.boundary(), patchi)
     {
-        if (isA<cyclicPolyPatch>(mesh.boundaryMesh()[patchi]))
+        if
+        (
+            isA<cyclicPolyPatch>(mesh.boundaryMesh()[patchi])
+         || patchGhostStart_[patchi] >= 0
+        )
         {
             patchDeltas[patchi] = mesh.boundary()[patchi].delta();
         }
     }
 
+    label nStopped = 0;
     hexMatcher hex;
     for (label celli = 0; celli < mesh.nCells(); ++celli)
     {
         if (hex.isA(mesh, celli))
         {
-            addHexCell(celli, patchDeltas);
+            addHexCell(celli, patchDeltas, nStopped);
         }
         else
         {
             addOtherCell(celli);
+        }
+    }
+
+    if (Pstream::parRun())
+    {
+        ghostValues(mesh.V().field(), ghostVolumes_);
+
+        reduce(nStopped, sumOp<label>());
+        if (nStopped)
+        {
+            Info<< "linearHatKernel: " << nStopped << " kernel block "
+                << "entries across two processor faces stop at the first"
+                << endl;
         }
     }
 }

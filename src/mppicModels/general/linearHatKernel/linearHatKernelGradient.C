@@ -4,7 +4,7 @@
 -------------------------------------------------------------------------------
 Description
     linearHatKernel::extrapolatedGradient: the derivative of the kernel's
-    interpolant, with linearly extrapolated ghost values beyond the
+    interpolant, with linearly extrapolated mirror values beyond the
     boundaries (see linearHatKernel.H).
 
 \*---------------------------------------------------------------------------*/
@@ -17,6 +17,7 @@ Description
 Foam::vector Foam::linearHatKernel::extrapolatedGradient
 (
     const UList<scalar>& cellValues,
+    const UList<scalar>& ghostValues,
     const point& position,
     const label celli
 ) const
@@ -32,11 +33,11 @@ Foam::vector Foam::linearHatKernel::extrapolatedGradient
 
     // Along each direction: the fraction t toward the chosen side, its
     // gradient, the block step to the far centre, and whether that centre
-    // is a ghost (no cell: the mirror image of the opposite neighbour)
+    // is a mirror (no cell: the image of the opposite neighbour)
     FixedList<scalar, 3> t;
     FixedList<vector, 3> dtdx;
     FixedList<label, 3> step;
-    FixedList<bool, 3> ghost;
+    FixedList<bool, 3> mirror;
 
     for (label i = 0; i < 3; ++i)
     {
@@ -54,36 +55,36 @@ Foam::vector Foam::linearHatKernel::extrapolatedGradient
             t[i] = min(towardPlus, scalar(1));
             dtdx[i] = plusOrMirror;
             step[i] = blockStride[i];
-            ghost[i] = !hasPlus;
+            mirror[i] = !hasPlus;
         }
         else
         {
             t[i] = min(max(offset & minusOrMirror, scalar(0)), scalar(1));
             dtdx[i] = minusOrMirror;
             step[i] = -blockStride[i];
-            ghost[i] = !hasMinus;
+            mirror[i] = !hasMinus;
         }
     }
 
     // Value at corner k (bit i set: the far centre along direction i); a
-    // ghost centre along i is 2 v(near) - v(opposite), expanded over the
-    // corner's ghost directions
+    // mirror centre along i is 2 v(near) - v(opposite), expanded over the
+    // corner's mirror directions
     FixedList<scalar, 8> corner;
     for (label k = 0; k < 8; ++k)
     {
-        label ghostBits = 0;
+        label mirrorBits = 0;
         for (label i = 0; i < 3; ++i)
         {
-            if ((k & (1 << i)) && ghost[i])
+            if ((k & (1 << i)) && mirror[i])
             {
-                ghostBits |= (1 << i);
+                mirrorBits |= (1 << i);
             }
         }
 
         scalar value = 0;
         for (label sub = 0; sub < 8; ++sub)
         {
-            if (sub & ~ghostBits)
+            if (sub & ~mirrorBits)
             {
                 continue;
             }
@@ -96,7 +97,7 @@ Foam::vector Foam::linearHatKernel::extrapolatedGradient
                 {
                     continue;
                 }
-                if (!ghost[i])
+                if (!mirror[i])
                 {
                     entry += step[i];
                 }
@@ -110,7 +111,7 @@ Foam::vector Foam::linearHatKernel::extrapolatedGradient
                     coeff *= 2;
                 }
             }
-            value += coeff*cellValues[block_[entry]];
+            value += coeff*this->value(cellValues, ghostValues, block_[entry]);
         }
         corner[k] = value;
     }

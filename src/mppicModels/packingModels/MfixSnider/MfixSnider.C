@@ -151,8 +151,10 @@ void Foam::PackingModels::MfixSnider<CloudType>::storeMeanVelocity()
     const fvMesh& mesh = this->owner().mesh();
     const linearHatKernel& kernel = linearHatKernel::New(mesh);
 
-    scalarField mass(mesh.nCells(), Zero);
-    vectorField momentum(mesh.nCells(), Zero);
+    // Cells, then the ghosts across processor faces
+    const label nCells = mesh.nCells();
+    scalarField mass(nCells + kernel.nGhosts(), Zero);
+    vectorField momentum(nCells + kernel.nGhosts(), Zero);
 
     // One kernel evaluation per parcel for both sums; the ratio needs no
     // division by the cell volumes
@@ -168,6 +170,12 @@ void Foam::PackingModels::MfixSnider<CloudType>::storeMeanVelocity()
             momentum[w.cells[k]] += mk*p.U();
         }
     }
+
+    // The sums in the neighbouring processors' cells go to their owners
+    SubField<scalar> ghostMass(mass, kernel.nGhosts(), nCells);
+    SubField<vector> ghostMomentum(momentum, kernel.nGhosts(), nCells);
+    kernel.addGhostDeposits(mass, ghostMass);
+    kernel.addGhostDeposits(momentum, ghostMomentum);
 
     volVectorField& Us = meanVelocity();
     vectorField& UsCells = Us.primitiveFieldRef();

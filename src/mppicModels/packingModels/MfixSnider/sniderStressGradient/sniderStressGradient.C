@@ -88,6 +88,7 @@ Foam::sniderStressGradient::sniderStressGradient(const fvMesh& mesh)
     kernel_(linearHatKernel::New(mesh)),
     anyOtherCell_(anyOtherCell(mesh)),
     cellStress_(),
+    ghostStress_(),
     cellGradient_()
 {}
 
@@ -97,6 +98,7 @@ Foam::sniderStressGradient::sniderStressGradient(const fvMesh& mesh)
 void Foam::sniderStressGradient::update(const scalarField& cellStress)
 {
     cellStress_ = cellStress;
+    kernel_.ghostValues(cellStress_, ghostStress_);
 
     if (anyOtherCell_)
     {
@@ -113,7 +115,10 @@ Foam::vector Foam::sniderStressGradient::at
 {
     if (kernel_.hexahedral(celli))
     {
-        return kernel_.extrapolatedGradient(cellStress_, position, celli);
+        return kernel_.extrapolatedGradient
+        (
+            cellStress_, ghostStress_, position, celli
+        );
     }
     return cellGradient_[celli];
 }
@@ -122,6 +127,7 @@ Foam::vector Foam::sniderStressGradient::at
 void Foam::sniderStressGradient::clear()
 {
     cellStress_.clear();
+    ghostStress_.clear();
     cellGradient_.clear();
 }
 
