@@ -6,8 +6,8 @@
 #include "linearHatKernel.H"
 #include "cellFaceGeometry.H"
 #include "cyclicPolyPatch.H"
-#include "processorPolyPatch.H"
 #include "hexMatcher.H"
+#include "volMesh.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -27,7 +27,7 @@ namespace
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::label Foam::linearHatKernel::cellAcross
+bool Foam::linearHatKernel::faceDelta
 (
     const label celli,
     const label facei,
@@ -37,70 +37,73 @@ Foam::label Foam::linearHatKernel::cellAcross
 {
     const fvMesh& mesh = this->mesh();
 
+    if (halo_.globalAcross(celli, facei) < 0)
+    {
+        return false;
+    }
+
     if (mesh.isInternalFace(facei))
     {
         const label nbr = cellFaceGeometry::cellAcross(mesh, celli, facei);
         delta = mesh.cellCentres()[nbr] - mesh.cellCentres()[celli];
-        return nbr;
     }
-
-    const label patchi = mesh.boundaryMesh().whichPatch(facei);
-    const polyPatch& pp = mesh.boundaryMesh()[patchi];
-
-    if (patchGhostStart_[patchi] >= 0)
+    else
     {
-        const label patchFacei = facei - pp.start();
-        delta = patchDeltas[patchi][patchFacei];
-        return mesh.nCells() + patchGhostStart_[patchi] + patchFacei;
+        const label patchi = mesh.boundaryMesh().whichPatch(facei);
+        delta =
+            patchDeltas[patchi][facei - mesh.boundaryMesh()[patchi].start()];
     }
-
-    if (!isA<cyclicPolyPatch>(pp))
-    {
-        return -1;
-    }
-
-    const cyclicPolyPatch& cyclic = refCast<const cyclicPolyPatch>(pp);
-    if (!cyclic.parallel())
-    {
-        return -1;
-    }
-
-    const label patchFacei = facei - pp.start();
-    delta = patchDeltas[patchi][patchFacei];
-    return cyclic.neighbPatch().faceCells()[patchFacei];
+    return true;
 }
 
 
 Foam::label Foam::linearHatKernel::stepToward
 (
-    const label celli,
-    const vector& dir,
-    const List<vectorField>& patchDeltas
+    const label globalCell,
+    const vector& dir
 ) const
 {
-    const fvMesh& mesh = this->mesh();
-
-    label bestFace = -1;
+    // The cell's faces: its own, or as the processor owning it sent them
+    label across = -1;
     scalar bestCos = minStepCos;
-    for (const label facei : mesh.cells()[celli])
+    bool found = false;
+
+    if (halo_.isLocal(globalCell))
     {
-        const scalar cosAngle =
-            cellFaceGeometry::outwardNormal(mesh, celli, facei) & dir;
-        if (cosAngle > bestCos)
+        const label celli = halo_.toLocal(globalCell);
+        for (const label facei : mesh().cells()[celli])
         {
-            bestCos = cosAngle;
-            bestFace = facei;
+            const scalar cosAngle =
+                cellFaceGeometry::outwardNormal(mesh(), celli, facei) & dir;
+            if (cosAngle > bestCos)
+            {
+                bestCos = cosAngle;
+                across = halo_.globalAcross(celli, facei);
+                found = true;
+            }
+        }
+    }
+    else
+    {
+        const vectorField* normals = nullptr;
+        const labelList* acrossFaces = nullptr;
+        if (!halo_.remoteFaces(globalCell, normals, acrossFaces))
+        {
+            return -1;
+        }
+        forAll(*normals, j)
+        {
+            const scalar cosAngle = (*normals)[j] & dir;
+            if (cosAngle > bestCos)
+            {
+                bestCos = cosAngle;
+                across = (*acrossFaces)[j];
+                found = true;
+            }
         }
     }
 
-    if (bestFace < 0)
-    {
-        return celli;
-    }
-
-    vector delta;
-    const label nbr = cellAcross(celli, bestFace, patchDeltas, delta);
-    return nbr < 0 ? celli : nbr;
+    return found && across >= 0 ? across : globalCell;
 }
 
 
@@ -167,8 +170,10 @@ void Foam::linearHatKernel::addHexCell
         normals[j] = cellFaceGeometry::outwardNormal(mesh(), celli, faces[j]);
 
         vector delta(Zero);
-        const label nbr = cellAcross(celli, faces[j], patchDeltas, delta);
-        const scalar distance = nbr < 0 ? 0 : (delta & normals[j]);
+        const scalar distance =
+            faceDelta(celli, faces[j], patchDeltas, delta)
+          ? (delta & normals[j])
+          : 0;
 
         towardFace_[facesPerCell*celli + j] =
             distance > VSMALL ? normals[j]/distance : vector::zero;
@@ -182,7 +187,7 @@ void Foam::linearHatKernel::addHexCell
         });
 
         block_[blockSize*celli + entry] =
-            blockCell(celli, steps, normals, patchDeltas, nStopped);
+            blockCell(celli, steps, normals, nStopped);
     }
 }
 
@@ -192,40 +197,30 @@ Foam::label Foam::linearHatKernel::blockCell
     const label celli,
     const FixedList<label, 3>& steps,
     const FixedList<vector, 6>& normals,
-    const List<vectorField>& patchDeltas,
     label& nStopped
 ) const
 {
-    const label nCells = mesh().nCells();
-
-    // The orders of the three directions, the serial one (0 1 2) first
+    // The orders of the three directions, the serial one (0 1 2) first: a
+    // step from a cell of another processor is known only where that cell
+    // is across a processor face of this one
     static const label orders[6][3] =
         {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
 
-    label stopped = -1;
+    label lastKnown = -1;
     for (const auto& order : orders)
     {
-        label cellk = celli;
-        bool atGhost = false;
+        label cellk = halo_.toGlobal(celli);
         for (const label i : order)
         {
-            if (steps[i] == 0)
+            if (steps[i] != 0 && cellk >= 0)
             {
-                continue;
-            }
-            if (atGhost)
-            {
-                // A ghost has no faces here: no further step from it
-                atGhost = false;
-                cellk = -1;
-                break;
-            }
-            const vector& dir = normals[2*i + (steps[i] > 0 ? 0 : 1)];
-            cellk = stepToward(cellk, dir, patchDeltas);
-            atGhost = cellk >= nCells;
-            if (atGhost && stopped < 0)
-            {
-                stopped = cellk;
+                const label next =
+                    stepToward(cellk, normals[2*i + (steps[i] > 0 ? 0 : 1)]);
+                if (next < 0 && lastKnown < 0)
+                {
+                    lastKnown = cellk;
+                }
+                cellk = next;
             }
         }
         if (cellk >= 0)
@@ -235,7 +230,7 @@ Foam::label Foam::linearHatKernel::blockCell
     }
 
     ++nStopped;
-    return stopped;
+    return lastKnown;
 }
 
 
@@ -244,7 +239,7 @@ void Foam::linearHatKernel::addOtherCell(const label celli)
     hexahedral_[celli] = false;
     for (label entry = 0; entry < blockSize; ++entry)
     {
-        block_[blockSize*celli + entry] = celli;
+        block_[blockSize*celli + entry] = halo_.toGlobal(celli);
     }
     for (label j = 0; j < facesPerCell; ++j)
     {
@@ -261,13 +256,9 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
     block_(blockSize*mesh.nCells()),
     towardFace_(facesPerCell*mesh.nCells()),
     hexahedral_(mesh.nCells(), true),
-    ghostPatches_(),
-    patchGhostStart_(mesh.boundary().size(), -1),
-    nGhosts_(0),
+    halo_(mesh),
     ghostVolumes_()
 {
-    setGhostSlots();
-
     // Cell-to-cell vectors across the cyclic and processor patches
     List<vectorField> patchDeltas(mesh.boundary().size());
     forAll(mesh.boundary(), patchi)
@@ -275,13 +266,14 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
         if
         (
             isA<cyclicPolyPatch>(mesh.boundaryMesh()[patchi])
-         || patchGhostStart_[patchi] >= 0
+         || halo_.isHaloPatch(patchi)
         )
         {
             patchDeltas[patchi] = mesh.boundary()[patchi].delta();
         }
     }
 
+    // The blocks in global cell indices
     label nStopped = 0;
     hexMatcher hex;
     for (label celli = 0; celli < mesh.nCells(); ++celli)
@@ -296,16 +288,27 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
         }
     }
 
+    // ... then cells of this processor by their own index, those of others
+    // by nCells + their slot
+    for (label& cellk : block_)
+    {
+        cellk =
+            halo_.isLocal(cellk)
+          ? halo_.toLocal(cellk)
+          : mesh.nCells() + halo_.slot(cellk);
+    }
+
     if (Pstream::parRun())
     {
-        ghostValues(mesh.V().field(), ghostVolumes_);
+        halo_.finalise();
+        halo_.ghostValues(mesh.V().field(), ghostVolumes_);
 
         reduce(nStopped, sumOp<label>());
         if (nStopped)
         {
             Info<< "linearHatKernel: " << nStopped << " kernel block "
-                << "entries across two processor faces stop at the first"
-                << endl;
+                << "entries need two steps beyond the processor faces and "
+                << "stop at the last cell known" << endl;
         }
     }
 }

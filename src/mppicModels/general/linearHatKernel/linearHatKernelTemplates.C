@@ -3,11 +3,6 @@
     This file is part of the mppicModels project, GPL-3.0-or-later.
 \*---------------------------------------------------------------------------*/
 
-#include "processorPolyPatch.H"
-#include "PstreamBuffers.H"
-#include "UIndirectList.H"
-#include "SubList.H"
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class Type>
@@ -59,99 +54,6 @@ void Foam::linearHatKernel::deposit
             ghostDensity[slot] += (w.values[k]/ghostVolumes_[slot])*value;
         }
     }
-}
-
-
-template<class Type>
-void Foam::linearHatKernel::ghostValues
-(
-    const UList<Type>& cellValues,
-    List<Type>& ghosts
-) const
-{
-    ghosts.setSize(nGhosts_);
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    for (const label patchi : ghostPatches_)
-    {
-        const processorPolyPatch& pp =
-            refCast<const processorPolyPatch>(mesh().boundaryMesh()[patchi]);
-        UOPstream toNbr(pp.neighbProcNo(), buffers);
-        toNbr << List<Type>(UIndirectList<Type>(cellValues, pp.faceCells()));
-    }
-    buffers.finishedSends();
-
-    for (const label patchi : ghostPatches_)
-    {
-        const processorPolyPatch& pp =
-            refCast<const processorPolyPatch>(mesh().boundaryMesh()[patchi]);
-        UIPstream fromNbr(pp.neighbProcNo(), buffers);
-        const List<Type> received(fromNbr);
-        SubList<Type>(ghosts, pp.size(), patchGhostStart_[patchi]) = received;
-    }
-}
-
-
-template<class Type>
-void Foam::linearHatKernel::ghostValues
-(
-    const GeometricField<Type, fvPatchField, volMesh>& field,
-    List<Type>& ghosts
-) const
-{
-    ghosts.setSize(nGhosts_);
-    for (const label patchi : ghostPatches_)
-    {
-        SubList<Type>
-        (
-            ghosts,
-            field.boundaryField()[patchi].size(),
-            patchGhostStart_[patchi]
-        ) = field.boundaryField()[patchi];
-    }
-}
-
-
-template<class Type>
-void Foam::linearHatKernel::addGhostDeposits
-(
-    UList<Type>& cellValues,
-    UList<Type>& ghosts
-) const
-{
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    for (const label patchi : ghostPatches_)
-    {
-        const processorPolyPatch& pp =
-            refCast<const processorPolyPatch>(mesh().boundaryMesh()[patchi]);
-        UOPstream toNbr(pp.neighbProcNo(), buffers);
-        toNbr << SubList<Type>(ghosts, pp.size(), patchGhostStart_[patchi]);
-    }
-    buffers.finishedSends();
-
-    for (const label patchi : ghostPatches_)
-    {
-        const processorPolyPatch& pp =
-            refCast<const processorPolyPatch>(mesh().boundaryMesh()[patchi]);
-        UIPstream fromNbr(pp.neighbProcNo(), buffers);
-        const List<Type> received(fromNbr);
-        const labelUList& faceCells = pp.faceCells();
-        forAll(received, facei)
-        {
-            cellValues[faceCells[facei]] += received[facei];
-        }
-    }
-
-    ghosts = Zero;
 }
 
 
