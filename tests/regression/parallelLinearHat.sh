@@ -3,25 +3,37 @@
 # parallelLinearHat <runDir>
 # tutorials/validation/uniformFluidization with mfixSnider (-packing
 # mfixSnider: the linear-hat deposit for its stress, its mean solids velocity
-# and the gas fraction) for 0.01 s (20 steps), serial and decomposed into 2
-# (simple, a cut through the bed), with the gas solved to 1e-13 (PCG/DIC,
-# PBiCGStab/DILU, relTol 0) so that the two differ by round-off only where
-# the kernel is the serial one. Checks at 0.01 s:
+# and the gas fraction), the gas velocity and fraction interpolated to the
+# parcels with the linear hat too, for 0.01 s (20 steps), serial, decomposed into 2
+# (simple (2 1 1): a vertical cut through the bed) and into 16 (simple
+# (2 4 2), oversubscribed: edges where four and points where eight
+# processors meet inside the bed), with the gas solved to 1e-13 (PCG/DIC,
+# PBiCGStab/DILU, relTol 0) so that the runs differ by round-off only where
+# the kernel is the serial one. Checks at 0.01 s, each decomposition:
 #   - alpha.air (the deposited gas fraction), U.air and the mean solids
 #     velocity kinematicCloud:UMean within 1e-9 of the serial run, each
-#     column scaled by its largest magnitude (measured when written: 2e-14,
-#     8e-12, 1.5e-12; with the kernel stopping at processor faces, as
-#     before, 0.058, 0.49 and 0.58: the check can fail);
+#     column scaled by its largest magnitude (measured when written: 2 ranks
+#     1.5e-14, 5.6e-12, 1.5e-12; 16 ranks 2.0e-14, 6.5e-12, 1.7e-12. This
+#     script with the build before the kernel reached across processor
+#     faces (0696ed1): 2 ranks 0.060, 0.57, 0.67; 16 ranks 0.12, 0.81, 0.79.
+#     With steps only from the cells across processor faces, no linear-hat
+#     interpolation, 16 ranks 0.0048, 0.11, 0.15: the check can fail);
 #   - the same parcel count and cloud mass (to 1e-12).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: parallelLinearHat.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
-for mode in serial parallel
+for mode in serial parallel parallel16
 do
     dir="$runDir/$mode"
     copyTutorial validation/uniformFluidization "$dir"
     setEntry "$dir" system/controlDict writePrecision 15
+    # (foamDictionary cannot address the keys U.air and alpha.air)
+    sed -i 's/^\( *\(U\|alpha\)\.air  *\)cell;/\1linearHat;/' \
+        "$dir/constant/kinematicCloudProperties"
+    [ "$(grep -c -E '(U|alpha)\.air +linearHat;' \
+        "$dir/constant/kinematicCloudProperties")" = 2 ] \
+        || { echo "interpolationSchemes not set"; exit 1; }
     # (foamDictionary cannot address the regular-expression key "U.air.*"
     # and would expand pFinal's $p)
     sed -i -e '/^    p$/,/}/{' \
@@ -35,13 +47,21 @@ do
         -e 's/tolerance .*;/tolerance       1e-13;/' -e '}' \
         "$dir/system/fvSolution"
 done
+sed -i -e 's/^numberOfSubdomains .*/numberOfSubdomains 16;/' \
+    -e 's/^\( *n  *\)(.*);/\1(2 4 2);/' \
+    "$runDir/parallel16/system/decomposeParDict"
+grep -q '(2 4 2)' "$runDir/parallel16/system/decomposeParDict" \
+    || { echo "decomposeParDict not set to 16"; exit 1; }
 
 runAllrun "$runDir/serial" 0.01 -packing mfixSnider || exit 1
-runAllrun "$runDir/parallel" 0.01 -packing mfixSnider -parallel || exit 1
-[ -d "$runDir/parallel/processor1/0.01" ] || { echo "no parallel run"; exit 1; }
-
+export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1
 status=0
-check sameState "$runDir/serial" "$runDir/parallel" 0.01 1e-9 \
-    alpha.air U.air kinematicCloud:UMean || status=1
-check serialParallel "$runDir/serial" "$runDir/parallel" 0.01 || status=1
+for mode in parallel parallel16
+do
+    runAllrun "$runDir/$mode" 0.01 -packing mfixSnider -parallel || exit 1
+    [ -d "$runDir/$mode/processor1/0.01" ] || { echo "no $mode run"; exit 1; }
+    check sameState "$runDir/serial" "$runDir/$mode" 0.01 1e-9 \
+        alpha.air U.air kinematicCloud:UMean || status=1
+    check serialParallel "$runDir/serial" "$runDir/$mode" 0.01 || status=1
+done
 exit $status

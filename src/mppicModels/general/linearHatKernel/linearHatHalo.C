@@ -108,49 +108,72 @@ void Foam::linearHatHalo::setRemoteFaces()
     {
         const processorPolyPatch& pp =
             refCast<const processorPolyPatch>(patches[patchi]);
-        const labelUList& faceCells = pp.faceCells();
-
-        List<vectorField> normals(faceCells.size());
-        labelListList across(faceCells.size());
-        forAll(faceCells, i)
-        {
-            const label celli = faceCells[i];
-            const labelList& cellFaces = mesh_.cells()[celli];
-            normals[i].setSize(cellFaces.size());
-            across[i].setSize(cellFaces.size());
-            forAll(cellFaces, j)
-            {
-                normals[i][j] =
-                    cellFaceGeometry::outwardNormal(mesh_, celli, cellFaces[j]);
-                across[i][j] = globalAcross(celli, cellFaces[j]);
-            }
-        }
+            List<vectorField> normals;
+        labelListList across;
+        faces(pp.faceCells(), normals, across);
         UOPstream toNbr(pp.neighbProcNo(), buffers);
         toNbr << normals << across;
     }
     buffers.finishedSends();
 
-    DynamicList<vectorField> remoteNormals;
-    DynamicList<labelList> remoteAcross;
     for (const label patchi : haloPatches_)
     {
         const processorPolyPatch& pp =
             refCast<const processorPolyPatch>(patches[patchi]);
         UIPstream fromNbr(pp.neighbProcNo(), buffers);
-        List<vectorField> normals(fromNbr);
-        labelListList across(fromNbr);
+        const List<vectorField> normals(fromNbr);
+        const labelListList across(fromNbr);
+        addRemote(patchNeighbours_[patchi], normals, across);
+    }
+}
 
-        forAll(normals, i)
+
+void Foam::linearHatHalo::faces
+(
+    const labelUList& cells,
+    List<vectorField>& normals,
+    labelListList& across
+) const
+{
+    normals.setSize(cells.size());
+    across.setSize(cells.size());
+    forAll(cells, i)
+    {
+        const label celli = cells[i];
+        const labelList& cellFaces = mesh_.cells()[celli];
+        normals[i].setSize(cellFaces.size());
+        across[i].setSize(cellFaces.size());
+        forAll(cellFaces, j)
         {
-            if (remoteIndex_.insert(patchNeighbours_[patchi][i], remoteNormals.size()))
-            {
-                remoteNormals.append(normals[i]);
-                remoteAcross.append(across[i]);
-            }
+            normals[i][j] =
+                cellFaceGeometry::outwardNormal(mesh_, celli, cellFaces[j]);
+            across[i][j] = globalAcross(celli, cellFaces[j]);
         }
     }
-    remoteNormals_.transfer(remoteNormals);
-    remoteAcross_.transfer(remoteAcross);
+}
+
+
+void Foam::linearHatHalo::addRemote
+(
+    const labelUList& globalCells,
+    const List<vectorField>& normals,
+    const labelListList& across
+)
+{
+    label n = remoteNormals_.size();
+    remoteNormals_.setSize(n + globalCells.size());
+    remoteAcross_.setSize(n + globalCells.size());
+    forAll(globalCells, i)
+    {
+        if (remoteIndex_.insert(globalCells[i], n))
+        {
+            remoteNormals_[n] = normals[i];
+            remoteAcross_[n] = across[i];
+            ++n;
+        }
+    }
+    remoteNormals_.setSize(n);
+    remoteAcross_.setSize(n);
 }
 
 
@@ -194,6 +217,69 @@ bool Foam::linearHatHalo::remoteFaces
     normals = &remoteNormals_[*iter];
     across = &remoteAcross_[*iter];
     return true;
+}
+
+
+void Foam::linearHatHalo::fetchFaces(const labelUList& globalCells)
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    // Ask each owner for the faces of its cells ...
+    List<DynamicList<label>> requested(Pstream::nProcs());
+    for (const label globali : globalCells)
+    {
+        if (!isLocal(globali) && !remoteIndex_.found(globali))
+        {
+            requested[globalCells_.whichProcID(globali)].append(globali);
+        }
+    }
+
+    PstreamBuffers requests(Pstream::commsTypes::nonBlocking);
+    forAll(requested, proci)
+    {
+        if (requested[proci].size())
+        {
+            UOPstream toOwner(proci, requests);
+            toOwner << labelList(requested[proci]);
+        }
+    }
+    labelList recvSizes;
+    requests.finishedSends(recvSizes);
+
+    // ... which answers in the order asked
+    PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
+    forAll(recvSizes, proci)
+    {
+        if (recvSizes[proci])
+        {
+            UIPstream fromNbr(proci, requests);
+            labelList cells(fromNbr);
+            for (label& celli : cells)
+            {
+                celli = toLocal(celli);
+            }
+            List<vectorField> normals;
+            labelListList across;
+            faces(cells, normals, across);
+            UOPstream toNbr(proci, answers);
+            toNbr << normals << across;
+        }
+    }
+    answers.finishedSends();
+
+    forAll(requested, proci)
+    {
+        if (requested[proci].size())
+        {
+            UIPstream fromOwner(proci, answers);
+            const List<vectorField> normals(fromOwner);
+            const labelListList across(fromOwner);
+            addRemote(requested[proci], normals, across);
+        }
+    }
 }
 
 

@@ -153,6 +153,7 @@ void Foam::linearHatKernel::addHexCell
 (
     const label celli,
     const List<vectorField>& patchDeltas,
+    labelHashSet& unknown,
     label& nStopped
 )
 {
@@ -187,7 +188,7 @@ void Foam::linearHatKernel::addHexCell
         });
 
         block_[blockSize*celli + entry] =
-            blockCell(celli, steps, normals, nStopped);
+            blockCell(celli, steps, normals, unknown, nStopped);
     }
 }
 
@@ -197,6 +198,7 @@ Foam::label Foam::linearHatKernel::blockCell
     const label celli,
     const FixedList<label, 3>& steps,
     const FixedList<vector, 6>& normals,
+    labelHashSet& unknown,
     label& nStopped
 ) const
 {
@@ -216,9 +218,13 @@ Foam::label Foam::linearHatKernel::blockCell
             {
                 const label next =
                     stepToward(cellk, normals[2*i + (steps[i] > 0 ? 0 : 1)]);
-                if (next < 0 && lastKnown < 0)
+                if (next < 0)
                 {
-                    lastKnown = cellk;
+                    unknown.insert(cellk);
+                    if (lastKnown < 0)
+                    {
+                        lastKnown = cellk;
+                    }
                 }
                 cellk = next;
             }
@@ -273,19 +279,32 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
         }
     }
 
-    // The blocks in global cell indices
+    // The blocks in global cell indices; where a step from a remote cell
+    // needs faces not yet known, they are fetched and the blocks built
+    // again (each pass one step further beyond the processor faces)
     label nStopped = 0;
     hexMatcher hex;
-    for (label celli = 0; celli < mesh.nCells(); ++celli)
+    for (label pass = 0; pass < 3; ++pass)
     {
-        if (hex.isA(mesh, celli))
+        labelHashSet unknown;
+        nStopped = 0;
+        for (label celli = 0; celli < mesh.nCells(); ++celli)
         {
-            addHexCell(celli, patchDeltas, nStopped);
+            if (hex.isA(mesh, celli))
+            {
+                addHexCell(celli, patchDeltas, unknown, nStopped);
+            }
+            else
+            {
+                addOtherCell(celli);
+            }
         }
-        else
+
+        if (!returnReduce(unknown.size(), sumOp<label>()))
         {
-            addOtherCell(celli);
+            break;
         }
+        halo_.fetchFaces(unknown.sortedToc());
     }
 
     // ... then cells of this processor by their own index, those of others
@@ -307,8 +326,7 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
         if (nStopped)
         {
             Info<< "linearHatKernel: " << nStopped << " kernel block "
-                << "entries need two steps beyond the processor faces and "
-                << "stop at the last cell known" << endl;
+                << "entries stop at the last cell known" << endl;
         }
     }
 }
