@@ -27,7 +27,8 @@ void Foam::linearHatHalo::ghostValues
         if (sendCells_[proci].size())
         {
             UOPstream toNbr(proci, buffers);
-            toNbr << List<Type>(UIndirectList<Type>(cellValues, sendCells_[proci]));
+            const labelList& cells = sendCells_[proci];
+            toNbr << List<Type>(UIndirectList<Type>(cellValues, cells));
         }
     }
     buffers.finishedSends();
@@ -62,7 +63,8 @@ void Foam::linearHatHalo::addGhostDeposits
         if (slotsFrom_[proci].size())
         {
             UOPstream toOwner(proci, buffers);
-            toOwner << List<Type>(UIndirectList<Type>(ghosts, slotsFrom_[proci]));
+            toOwner
+                << List<Type>(UIndirectList<Type>(ghosts, slotsFrom_[proci]));
         }
     }
     buffers.finishedSends();
