@@ -5,106 +5,17 @@
 
 #include "linearHatHalo.H"
 #include "cellFaceGeometry.H"
-#include "cyclicPolyPatch.H"
 #include "processorPolyPatch.H"
-#include "processorCyclicPolyPatch.H"
 #include "PstreamBuffers.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::label Foam::linearHatHalo::globalAcross
-(
-    const label celli,
-    const label facei
-) const
-{
-    if (mesh_.isInternalFace(facei))
-    {
-        return toGlobal(cellFaceGeometry::cellAcross(mesh_, celli, facei));
-    }
-
-    const label patchi = mesh_.boundaryMesh().whichPatch(facei);
-    const polyPatch& pp = mesh_.boundaryMesh()[patchi];
-    const label patchFacei = facei - pp.start();
-
-    if (isHaloPatch(patchi))
-    {
-        return patchNeighbours_[patchi][patchFacei];
-    }
-
-    if (isA<cyclicPolyPatch>(pp))
-    {
-        const cyclicPolyPatch& cyclic = refCast<const cyclicPolyPatch>(pp);
-        if (cyclic.parallel())
-        {
-            return toGlobal(cyclic.neighbPatch().faceCells()[patchFacei]);
-        }
-    }
-
-    return -1;
-}
-
-
-void Foam::linearHatHalo::setPatchNeighbours()
-{
-    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
-
-    DynamicList<label> haloPatches;
-    labelHashSet neighbours;
-    forAll(patches, patchi)
-    {
-        const polyPatch& pp = patches[patchi];
-        if (!isA<processorPolyPatch>(pp) || isA<processorCyclicPolyPatch>(pp))
-        {
-            continue;
-        }
-
-        // The exchanges send one list per neighbouring processor
-        const label nbrProc =
-            refCast<const processorPolyPatch>(pp).neighbProcNo();
-        if (!neighbours.insert(nbrProc))
-        {
-            FatalErrorInFunction
-                << "Two processor patches of processor "
-                << Pstream::myProcNo() << " face processor " << nbrProc
-                << " (patch " << pp.name() << "): the linear-hat kernel "
-                << "expects one per neighbour" << exit(FatalError);
-        }
-        haloPatches.append(patchi);
-    }
-    haloPatches_.transfer(haloPatches);
-
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    for (const label patchi : haloPatches_)
-    {
-        const processorPolyPatch& pp =
-            refCast<const processorPolyPatch>(patches[patchi]);
-        labelList faceCells(pp.faceCells());
-        for (label& celli : faceCells)
-        {
-            celli = toGlobal(celli);
-        }
-        UOPstream toNbr(pp.neighbProcNo(), buffers);
-        toNbr << faceCells;
-    }
-    buffers.finishedSends();
-
-    for (const label patchi : haloPatches_)
-    {
-        const processorPolyPatch& pp =
-            refCast<const processorPolyPatch>(patches[patchi]);
-        UIPstream fromNbr(pp.neighbProcNo(), buffers);
-        fromNbr >> patchNeighbours_[patchi];
-    }
-}
-
 
 void Foam::linearHatHalo::setRemoteFaces()
 {
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
 
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    for (const label patchi : haloPatches_)
+    for (const label patchi : neighbours_.processorPatches())
     {
         const processorPolyPatch& pp =
             refCast<const processorPolyPatch>(patches[patchi]);
@@ -116,14 +27,21 @@ void Foam::linearHatHalo::setRemoteFaces()
     }
     buffers.finishedSends();
 
-    for (const label patchi : haloPatches_)
+    for (const label patchi : neighbours_.processorPatches())
     {
         const processorPolyPatch& pp =
             refCast<const processorPolyPatch>(patches[patchi]);
         UIPstream fromNbr(pp.neighbProcNo(), buffers);
         const List<vectorField> normals(fromNbr);
         const labelListList across(fromNbr);
-        addRemote(patchNeighbours_[patchi], normals, across);
+
+        labelList cells(pp.size());
+        forAll(cells, facei)
+        {
+            cells[facei] =
+                neighbours_.across(pp.faceCells()[facei], pp.start() + facei);
+        }
+        addRemote(cells, normals, across);
     }
 }
 
@@ -147,7 +65,7 @@ void Foam::linearHatHalo::faces
         {
             normals[i][j] =
                 cellFaceGeometry::outwardNormal(mesh_, celli, cellFaces[j]);
-            across[i][j] = globalAcross(celli, cellFaces[j]);
+            across[i][j] = neighbours_.across(celli, cellFaces[j]);
         }
     }
 }
@@ -182,9 +100,7 @@ void Foam::linearHatHalo::addRemote
 Foam::linearHatHalo::linearHatHalo(const fvMesh& mesh)
 :
     mesh_(mesh),
-    globalCells_(mesh.nCells()),
-    haloPatches_(),
-    patchNeighbours_(mesh.boundaryMesh().size()),
+    neighbours_(coupledCellNeighbours::New(mesh)),
     remoteIndex_(),
     remoteNormals_(),
     remoteAcross_(),
@@ -194,7 +110,6 @@ Foam::linearHatHalo::linearHatHalo(const fvMesh& mesh)
 {
     if (Pstream::parRun())
     {
-        setPatchNeighbours();
         setRemoteFaces();
     }
 }
@@ -231,9 +146,9 @@ void Foam::linearHatHalo::fetchFaces(const labelUList& globalCells)
     List<DynamicList<label>> requested(Pstream::nProcs());
     for (const label globali : globalCells)
     {
-        if (!isLocal(globali) && !remoteIndex_.found(globali))
+        if (!neighbours_.isLocal(globali) && !remoteIndex_.found(globali))
         {
-            requested[globalCells_.whichProcID(globali)].append(globali);
+            requested[neighbours_.whichProcID(globali)].append(globali);
         }
     }
 
@@ -259,7 +174,7 @@ void Foam::linearHatHalo::fetchFaces(const labelUList& globalCells)
             labelList cells(fromNbr);
             for (label& celli : cells)
             {
-                celli = toLocal(celli);
+                celli = neighbours_.toLocal(celli);
             }
             List<vectorField> normals;
             labelListList across;
@@ -314,8 +229,11 @@ void Foam::linearHatHalo::finalise()
     List<DynamicList<label>> slots(Pstream::nProcs());
     forAll(globalOfSlot, s)
     {
-        const label proci = globalCells_.whichProcID(globalOfSlot[s]);
-        requests[proci].append(globalCells_.toLocal(proci, globalOfSlot[s]));
+        const label proci = neighbours_.whichProcID(globalOfSlot[s]);
+        requests[proci].append
+        (
+            neighbours_.globalCells().toLocal(proci, globalOfSlot[s])
+        );
         slots[proci].append(s);
     }
 

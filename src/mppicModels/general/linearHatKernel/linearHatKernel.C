@@ -37,7 +37,7 @@ bool Foam::linearHatKernel::faceDelta
 {
     const fvMesh& mesh = this->mesh();
 
-    if (halo_.globalAcross(celli, facei) < 0)
+    if (neighbours_.across(celli, facei) < 0)
     {
         return false;
     }
@@ -68,9 +68,9 @@ Foam::label Foam::linearHatKernel::stepToward
     scalar bestCos = minStepCos;
     bool found = false;
 
-    if (halo_.isLocal(globalCell))
+    if (neighbours_.isLocal(globalCell))
     {
-        const label celli = halo_.toLocal(globalCell);
+        const label celli = neighbours_.toLocal(globalCell);
         for (const label facei : mesh().cells()[celli])
         {
             const scalar cosAngle =
@@ -78,7 +78,7 @@ Foam::label Foam::linearHatKernel::stepToward
             if (cosAngle > bestCos)
             {
                 bestCos = cosAngle;
-                across = halo_.globalAcross(celli, facei);
+                across = neighbours_.across(celli, facei);
                 found = true;
             }
         }
@@ -211,7 +211,7 @@ Foam::label Foam::linearHatKernel::blockCell
     label lastKnown = -1;
     for (const auto& order : orders)
     {
-        label cellk = halo_.toGlobal(celli);
+        label cellk = neighbours_.toGlobal(celli);
         for (const label i : order)
         {
             if (steps[i] != 0 && cellk >= 0)
@@ -245,7 +245,7 @@ void Foam::linearHatKernel::addOtherCell(const label celli)
     hexahedral_[celli] = false;
     for (label entry = 0; entry < blockSize; ++entry)
     {
-        block_[blockSize*celli + entry] = halo_.toGlobal(celli);
+        block_[blockSize*celli + entry] = neighbours_.toGlobal(celli);
     }
     for (label j = 0; j < facesPerCell; ++j)
     {
@@ -262,6 +262,7 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
     block_(blockSize*mesh.nCells()),
     towardFace_(facesPerCell*mesh.nCells()),
     hexahedral_(mesh.nCells(), true),
+    neighbours_(coupledCellNeighbours::New(mesh)),
     halo_(mesh),
     ghostVolumes_()
 {
@@ -272,7 +273,7 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
         if
         (
             isA<cyclicPolyPatch>(mesh.boundaryMesh()[patchi])
-         || halo_.isHaloPatch(patchi)
+         || neighbours_.isProcessorPatch(patchi)
         )
         {
             patchDeltas[patchi] = mesh.boundary()[patchi].delta();
@@ -312,8 +313,8 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
     for (label& cellk : block_)
     {
         cellk =
-            halo_.isLocal(cellk)
-          ? halo_.toLocal(cellk)
+            neighbours_.isLocal(cellk)
+          ? neighbours_.toLocal(cellk)
           : mesh.nCells() + halo_.slot(cellk);
     }
 

@@ -86,7 +86,7 @@ Foam::PackingModels::ColoringFunction<CloudType>::packFor
     {
         pack.impulse = -this->packingGradAt(p);
         pack.uMean = this->uMeanAt(p);
-        pack.cell = p.cell();
+        pack.cell = this->globalCell(p);
         return pack;
     }
 
@@ -94,7 +94,7 @@ Foam::PackingModels::ColoringFunction<CloudType>::packFor
     {
         pack.impulse = -this->faceGradientAt(p);
         pack.uMean = this->uMeanAt(p);
-        pack.cell = p.cell();
+        pack.cell = this->globalCell(p);
         return pack;
     }
 
@@ -116,7 +116,7 @@ Foam::PackingModels::ColoringFunction<CloudType>::packFor
                 -max(cellValue, rules_.closePackFraction())
                 *entered->direction;
             pack.uMean = this->cellUMean(p.cell());
-            pack.cell = p.cell();
+            pack.cell = this->globalCell(p);
             pack.closePacked = cellValue > 0;
             return pack;
         }
@@ -128,7 +128,7 @@ Foam::PackingModels::ColoringFunction<CloudType>::packFor
 
     pack.impulse = -ahead.value*ahead.normal;
     pack.uMean = ahead.found ? ahead.uMean : this->uMeanAt(p);
-    pack.cell = ahead.found ? ahead.cell : p.cell();
+    pack.cell = ahead.found ? ahead.cell : this->globalCell(p);
     return pack;
 }
 
@@ -212,14 +212,21 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
         }
 
         // End of the packing step: the packs take their impulses back
-        reactions_.apply
-        (
-            this->owner(),
-            [this](const typename CloudType::parcelType& p, const vector& dU)
-            {
-                this->recordVelocityChange(p, dU);
-            }
-        );
+        if (conserveMomentum_)
+        {
+            reactions_.apply
+            (
+                this->owner(),
+                [this]
+                (
+                    const typename CloudType::parcelType& p,
+                    const vector& dU
+                )
+                {
+                    this->recordVelocityChange(p, dU);
+                }
+            );
+        }
 
         // Where each parcel now is
         if (impulse_ == impulseType::neighbour)

@@ -210,7 +210,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
         ahead.found = true;
         ahead.value = cellValues_[nbr];
         ahead.uMean = cellUMean_[nbr];
-        ahead.cell = nbr;
+        ahead.cell = coupledCellNeighbours::New(mesh).toGlobal(nbr);
         return ahead;
     }
 
@@ -223,6 +223,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
         ahead.found = true;
         ahead.value = coupledValues_[patchi][patchFacei];
         ahead.uMean = coupledUMean_[patchi][patchFacei];
+        ahead.cell = coupledCellNeighbours::New(mesh).across(celli, towardFace);
     }
     else if (isA<wallPolyPatch>(patch))
     {
@@ -278,6 +279,10 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheFields
 
     const fvMesh& mesh = this->owner().mesh();
     const word& cloudName = this->owner().name();
+
+    // Constructed here, by every processor together (it exchanges the
+    // cells across processor faces), before any parcel asks for it
+    coupledCellNeighbours::New(mesh);
 
     cellAddedMomentum_.setSize(mesh.nCells());
     cellAddedMomentum_ = Zero;

@@ -204,8 +204,8 @@ Foam::label Foam::PackingModels::MfixSnider<CloudType>::packCell
     const label facei = cellFaceGeometry::faceToward(mesh, celli, tauGrad);
 
     return
-        facei >= 0 && mesh.isInternalFace(facei)
-      ? cellFaceGeometry::cellAcross(mesh, celli, facei)
+        facei >= 0
+      ? coupledCellNeighbours::New(mesh).across(celli, facei)
       : -1;
 }
 
@@ -250,14 +250,21 @@ void Foam::PackingModels::MfixSnider<CloudType>::cacheFields(const bool store)
     {
         // The packs take the opposite of the impulses they gave, before
         // the mean of the final velocities is taken
-        reactions_.apply
-        (
-            this->owner(),
-            [this](const typename CloudType::parcelType& p, const vector& dU)
-            {
-                this->recordVelocityChange(p, dU);
-            }
-        );
+        if (conserveMomentum_)
+        {
+            reactions_.apply
+            (
+                this->owner(),
+                [this]
+                (
+                    const typename CloudType::parcelType& p,
+                    const vector& dU
+                )
+                {
+                    this->recordVelocityChange(p, dU);
+                }
+            );
+        }
         storeMeanVelocity();
         previousMeanVelocity_ = nullptr;
         stressGradient_.clear();
@@ -352,7 +359,8 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
         const bool refused = entered && !entered->admitted;
 
         const vector dPack = kept - Unew + dStress;
-        const label pack = refused ? celli : packCell(p, tauGrad);
+        const label pack =
+            refused ? this->globalCell(p) : packCell(p, tauGrad);
         if (pack >= 0 && magSqr(dPack) > 0)
         {
             reactions_.record(p, pack, dPack);

@@ -31,18 +31,31 @@ void Foam::PackReactions<CloudType>::apply
     const Report& report
 )
 {
-    if (turned_.empty())
+    if (!returnReduce(turned_.size(), sumOp<label>()))
     {
         return;
     }
 
-    const label nCells = cloud.mesh().nCells();
+    const fvMesh& mesh = cloud.mesh();
+    const coupledCellNeighbours& cells = coupledCellNeighbours::New(mesh);
+    const label nCells = mesh.nCells();
+
+    if (Pstream::parRun())
+    {
+        gatherDeparted(cloud);
+    }
 
     // Mass turned by each pack, and mass of the pack itself (its parcels
     // at the end of the step, less any it turned)
     scalarField incomingMass(nCells, Zero);
     scalarField packMass(nCells, Zero);
     vectorField packImpulse(nCells, Zero);
+
+    // The same for the packs on other processors, by their global index
+    Map<label> remoteIndex;
+    DynamicList<label> remotePack;
+    DynamicList<scalar> remoteMass;
+    DynamicList<vector> remoteImpulse;
 
     for (const parcelType& p : cloud)
     {
@@ -51,15 +64,44 @@ void Foam::PackReactions<CloudType>::apply
 
         if (iter.found())
         {
-            const label packCell = iter().first();
-            incomingMass[packCell] += m;
-            packImpulse[packCell] += m*iter().second();
-            if (packCell == p.cell())
+            const label pack = iter().first();
+            if (cells.isLocal(pack))
             {
-                continue;
+                const label packCell = cells.toLocal(pack);
+                incomingMass[packCell] += m;
+                packImpulse[packCell] += m*iter().second();
+                if (packCell == p.cell())
+                {
+                    continue;
+                }
+            }
+            else
+            {
+                if (remoteIndex.insert(pack, remotePack.size()))
+                {
+                    remotePack.append(pack);
+                    remoteMass.append(0);
+                    remoteImpulse.append(Zero);
+                }
+                const label i = remoteIndex[pack];
+                remoteMass[i] += m;
+                remoteImpulse[i] += m*iter().second();
             }
         }
         packMass[p.cell()] += m;
+    }
+
+    if (Pstream::parRun())
+    {
+        sendRemoteImpulses
+        (
+            cells,
+            remotePack,
+            remoteMass,
+            remoteImpulse,
+            incomingMass,
+            packImpulse
+        );
     }
 
     // Share of its impulse each turned parcel keeps
@@ -73,6 +115,11 @@ void Foam::PackReactions<CloudType>::apply
         }
     }
 
+    const scalarList keptThere
+    (
+        Pstream::parRun() ? remoteKept(cells, remotePack, kept) : scalarList()
+    );
+
     for (parcelType& p : cloud)
     {
         const auto iter = turned_.cfind(labelPair(p.origProc(), p.origId()));
@@ -80,10 +127,15 @@ void Foam::PackReactions<CloudType>::apply
         vector dU = Zero;
         if (iter.found())
         {
-            const label packCell = iter().first();
-            dU = -(1 - kept[packCell])*iter().second();
+            const label pack = iter().first();
+            const bool here = cells.isLocal(pack);
+            const scalar f =
+                here
+              ? kept[cells.toLocal(pack)]
+              : keptThere[remoteIndex[pack]];
+            dU = -(1 - f)*iter().second();
 
-            if (packCell == p.cell())
+            if (here && cells.toLocal(pack) == p.cell())
             {
                 p.U() += dU;
                 report(p, dU);
