@@ -214,18 +214,7 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
         // End of the packing step: the packs take their impulses back
         if (conserveMomentum_)
         {
-            reactions_.apply
-            (
-                this->owner(),
-                [this]
-                (
-                    const typename CloudType::parcelType& p,
-                    const vector& dU
-                )
-                {
-                    this->recordVelocityChange(p, dU);
-                }
-            );
+            this->applyReactions(reactions_);
         }
 
         // Where each parcel now is

@@ -252,18 +252,7 @@ void Foam::PackingModels::MfixSnider<CloudType>::cacheFields(const bool store)
         // the mean of the final velocities is taken
         if (conserveMomentum_)
         {
-            reactions_.apply
-            (
-                this->owner(),
-                [this]
-                (
-                    const typename CloudType::parcelType& p,
-                    const vector& dU
-                )
-                {
-                    this->recordVelocityChange(p, dU);
-                }
-            );
+            this->applyReactions(reactions_);
         }
         storeMeanVelocity();
         previousMeanVelocity_ = nullptr;
