@@ -283,9 +283,10 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
     // The blocks in global cell indices; where a step from a remote cell
     // needs faces not yet known, they are fetched and the blocks built
     // again (each pass one step further beyond the processor faces)
+    const label nPasses = 3;
     label nStopped = 0;
     hexMatcher hex;
-    for (label pass = 0; pass < 3; ++pass)
+    for (label pass = 0; pass < nPasses; ++pass)
     {
         labelHashSet unknown;
         nStopped = 0;
@@ -301,7 +302,11 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
             }
         }
 
-        if (!returnReduce(unknown.size(), sumOp<label>()))
+        if
+        (
+            pass == nPasses - 1
+         || !returnReduce(unknown.size(), sumOp<label>())
+        )
         {
             break;
         }
