@@ -128,18 +128,18 @@ int main(int argc, char *argv[])
 
         if (pimple.nCorrPIMPLE() <= 1)
         {
-            #include "rhoEqn.H"
+            #include "gasContinuityEqn.H"
         }
 
         while (pimple.loop())
         {
-            #include "UEqn.H"
-            #include "YEqn.H"
-            #include "EEqn.H"
+            #include "gasMomentumEqn.H"
+            #include "gasSpeciesEqn.H"
+            #include "gasEnergyEqn.H"
 
             while (pimple.correct())
             {
-                #include "pEqn.H"
+                #include "gasPressureEqn.H"
             }
         }
 
