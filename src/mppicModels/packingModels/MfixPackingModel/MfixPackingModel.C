@@ -24,6 +24,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     coeffs_(dict.subDict(type + "Coeffs")),
     volumeAverage_(nullptr),
     uAverage_(nullptr),
+    cellNeighbours_(nullptr),
     packingField_(nullptr),
     cellValues_(),
     cellUMean_(),
@@ -43,6 +44,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     coeffs_(cm.coeffs_),
     volumeAverage_(nullptr),
     uAverage_(nullptr),
+    cellNeighbours_(nullptr),
     packingField_(nullptr),
     cellValues_(),
     cellUMean_(),
@@ -210,7 +212,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
         ahead.found = true;
         ahead.value = cellValues_[nbr];
         ahead.uMean = cellUMean_[nbr];
-        ahead.cell = coupledCellNeighbours::New(mesh).toGlobal(nbr);
+        ahead.cell = cellNeighbours_->toGlobal(nbr);
         return ahead;
     }
 
@@ -223,7 +225,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
         ahead.found = true;
         ahead.value = coupledValues_[patchi][patchFacei];
         ahead.uMean = coupledUMean_[patchi][patchFacei];
-        ahead.cell = coupledCellNeighbours::New(mesh).across(celli, towardFace);
+        ahead.cell = cellNeighbours_->across(celli, towardFace);
     }
     else if (isA<wallPolyPatch>(patch))
     {
@@ -282,7 +284,7 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheFields
 
     // Constructed here, by every processor together (it exchanges the
     // cells across processor faces), before any parcel asks for it
-    coupledCellNeighbours::New(mesh);
+    cellNeighbours_ = &coupledCellNeighbours::New(mesh);
 
     cellAddedMomentum_.setSize(mesh.nCells());
     cellAddedMomentum_ = Zero;

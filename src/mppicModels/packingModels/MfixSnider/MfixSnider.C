@@ -205,7 +205,7 @@ Foam::label Foam::PackingModels::MfixSnider<CloudType>::packCell
 
     return
         facei >= 0
-      ? coupledCellNeighbours::New(mesh).across(celli, facei)
+      ? this->cellNeighbours().across(celli, facei)
       : -1;
 }
 
