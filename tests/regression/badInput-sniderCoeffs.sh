@@ -2,7 +2,8 @@
 # badInput-sniderCoeffs <runDir>: mfixSnider with pSolid -1, gamma -1,
 # slipVelocityFactor 1.5, capFactor 0.5, collisionDamping maybe,
 # meanFreePathCap perhaps, restWhereConverging sometimes, capacityLimit
-# often, holdSupportedPacks rarely, supportAngle 100, supportPatches
+# often, holdSupportedPacks rarely, releaseAbove 0.6 and 1.2 (outside
+# (closePackFraction, 1]), supportAngle 100, supportPatches
 # (nowhere), conserveMomentum perhaps and a misspelt
 # keyword (colisionDamping) -> FatalIOError naming the
 # keyword and the value (or the allowed range or keywords), exit status 1,
@@ -36,5 +37,7 @@ tryCoeffs "holdSupportedPacks rarely;" "holdSupportedPacks" "rarely"
 tryCoeffs "supportAngle 100;" "supportAngle" "100" "(0, 90]"
 tryCoeffs "supportPatches (nowhere);" "supportPatches" "nowhere"
 tryCoeffs "conserveMomentum perhaps;" "conserveMomentum" "perhaps"
+tryCoeffs "releaseAbove 0.6;" "releaseAbove" "0.6" "(0.6, 1]"
+tryCoeffs "releaseAbove 1.2;" "releaseAbove" "1.2" "(0.6, 1]"
 tryCoeffs "colisionDamping true;" "colisionDamping" "collisionDamping"
 exit $status

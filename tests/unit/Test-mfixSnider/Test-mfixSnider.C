@@ -81,6 +81,19 @@ Description
        f dU, f = M/(M + m), cell 0's parcel (mass M) takes -f m dU/M, and
        their momentum is -2 m as before.
 
+    8. Release of an over-packed cell (releaseAbove 0.65, close pack 0.6):
+       in a cell at alpha 0.68, r = 0.005, dt 1e-3, grad tau = (3 -4 0):
+       the velocity of a move of l = 3.7*0.005/(3 sqrt(2)*0.68) down the
+       gradient, l/dt*(-0.6, 0.8, 0); none at 0.65 or without the keyword.
+
+    9. The boundary rule: a parcel at (0.01, 0.1, 0.05) in cell 0 (side
+       wall x = 0, bottom y = 0), U = (-2 -1 0.5), keeps no component into
+       a boundary whose plane its displacement d reaches: d = (-0.02 0.05
+       0) -> (0 -1 0.5); (-0.005 -0.2 0) -> (-2 0 0.5); (-0.02 -0.2 0) ->
+       (0 0 0.5); (-0.005 -0.05 0), no plane reached -> U. A velocity away
+       from the wall it reaches, (2 0 0), is kept; in cell 5 (no boundary
+       face) U is kept.
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
@@ -318,6 +331,8 @@ int main(int argc, char *argv[])
     testLimiterAndMean(cloud, mesh);
     testMeanFreePathCap();
     testRestWhereConverging();
+    testRelease();
+    testVelocityIntoBoundary(mesh);
     testDamping(cloud, mesh);
     testConserveMomentum(cloud, mesh);
 

@@ -54,6 +54,39 @@ inline void enterThrough
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
+Foam::vector Foam::cellFaceGeometry::withoutVelocityIntoBoundary
+(
+    const fvMesh& mesh,
+    const label celli,
+    const point& x,
+    const vector& d,
+    const vector& U
+)
+{
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    vector kept = U;
+    for (const label facei : mesh.cells()[celli])
+    {
+        if
+        (
+            mesh.isInternalFace(facei)
+         || patches[patches.whichPatch(facei)].coupled()
+        )
+        {
+            continue;
+        }
+        const vector n = outwardNormal(mesh, celli, facei);
+        const bool reached = ((x + d - mesh.faceCentres()[facei]) & n) >= 0;
+        const scalar into = kept & n;
+        if (reached && into > 0)
+        {
+            kept -= into*n;
+        }
+    }
+    return kept;
+}
+
+
 Foam::scalar Foam::cellFaceGeometry::exitDistance
 (
     const fvMesh& mesh,

@@ -134,10 +134,12 @@ Foam::vector Foam::CapacityLimit<CloudType>::move
     const vector& dU,
     const vector& uPack,
     const scalar deltaT,
-    vector& kept
+    vector& kept,
+    const vector& displacement
 ) const
 {
-    const vector dX = entries_.limitedCorrection(mesh, p, dU, deltaT);
+    const vector dX =
+        entries_.limitedCorrection(mesh, p, dU + displacement, deltaT);
 
     kept = entries_.keptVelocity(p, p.U() + dU, uPack);
 

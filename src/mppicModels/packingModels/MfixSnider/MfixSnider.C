@@ -15,7 +15,7 @@ Foam::PackingModels::MfixSnider<CloudType>::keywords
 ({
     "closePackFraction", "pSolid", "gamma", "eps", "e1",
     "slipVelocityFactor", "capFactor", "meanFreePathCap",
-    "restWhereConverging", "collisionDamping", "capacityLimit",
+    "restWhereConverging", "releaseAbove", "collisionDamping", "capacityLimit",
     "holdSupportedPacks", "supportPatches", "supportAngle",
     "conserveMomentum"
 });
@@ -279,91 +279,6 @@ void Foam::PackingModels::MfixSnider<CloudType>::cacheFields(const bool store)
     {
         damping_.update(this->owner(), cellAlpha_);
     }
-}
-
-
-template<class CloudType>
-Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
-(
-    typename CloudType::parcelType& p,
-    const scalar deltaT
-) const
-{
-    const label celli = p.cell();
-
-    const vector tauGrad = stressGradient_.at(p.position(), celli);
-
-    const vector dU =
-        rules_.impulseVelocity(tauGrad, p.rho(), cellAlpha_[celli], deltaT);
-
-    vector Unew =
-        rules_.correctedVelocity
-        (
-            p.U(), (*previousMeanVelocity_)[celli], dU, tauGrad
-        );
-
-    Unew =
-        rules_.meanFreePathCapped
-        (
-            Unew, tauGrad, cellAlpha_[celli], 0.5*p.d(), deltaT
-        );
-
-    // The stress's share of the change (limiter, travel cap), before the
-    // damping, which relaxes toward the cell's own mean
-    const vector dStress = Unew - p.U();
-
-    if (collisionDamping_)
-    {
-        Unew = damping_.damped(Unew, celli, deltaT);
-    }
-
-    vector kept = Unew;
-    vector move = Unew - p.U();
-
-    if (capacityLimit_)
-    {
-        // As coloringFunction's capacity limit (CapacityLimit): the
-        // parcel keeps no velocity into a cell that refused it relative to
-        // that cell's parcels (their mean of the previous step)
-        move =
-            limit_.move
-            (
-                this->owner().mesh(),
-                p,
-                Unew - p.U(),
-                (*previousMeanVelocity_)[celli],
-                deltaT,
-                kept
-            );
-    }
-
-    if (conserveMomentum_)
-    {
-        // The pack that turned the parcel takes the opposite impulse at
-        // the end of the step: the cell that refused it, else the denser
-        // neighbour the stress gradient points at (none at a wall: the
-        // wall takes it)
-        const typename ParcelEntries<CloudType>::entry* entered =
-            capacityLimit_ ? limit_.entries().find(p) : nullptr;
-        const bool refused = entered && !entered->admitted;
-
-        const vector dPack = kept - Unew + dStress;
-        const label pack =
-            refused ? this->globalCell(p) : packCell(p, tauGrad);
-        if (pack >= 0 && magSqr(dPack) > 0)
-        {
-            reactions_.record(p, pack, dPack);
-        }
-    }
-
-    this->recordVelocityChange(p, kept - p.U());
-
-    if (capacityLimit_)
-    {
-        // OpenFOAM adds the move to the velocity after the correction move
-        p.U() = kept - move;
-    }
-    return move;
 }
 
 

@@ -66,6 +66,16 @@ Foam::sniderStressRules::sniderStressRules(const dictionary& coeffs)
     restWhereConverging_
     (
         coeffs.lookupOrDefault<bool>("restWhereConverging", false)
+    ),
+    releaseAbove_
+    (
+        mppicCoefficients::read
+        (
+            coeffs,
+            "releaseAbove",
+            1,
+            mppicCoefficients::bounds::openClosed(closePackFraction_, 1)
+        )
     )
 {}
 
@@ -158,13 +168,40 @@ Foam::vector Foam::sniderStressRules::meanFreePathCapped
         return U;
     }
 
-    const scalar meanFreePath = 3.7*radius/(3*sqrt(2.0)*alpha);
+    const scalar l = meanFreePath(alpha, radius);
     const scalar travel = mag(U)*deltaT;
-    if (travel <= meanFreePath)
+    if (travel <= l)
     {
         return U;
     }
-    return U*(meanFreePath/travel);
+    return U*(l/travel);
+}
+
+
+Foam::scalar Foam::sniderStressRules::meanFreePath
+(
+    const scalar alpha,
+    const scalar radius
+) const
+{
+    return 3.7*radius/(3*sqrt(2.0)*max(alpha, SMALL));
+}
+
+
+Foam::vector Foam::sniderStressRules::releaseVelocity
+(
+    const vector& tauGrad,
+    const scalar alpha,
+    const scalar radius,
+    const scalar deltaT
+) const
+{
+    const scalar magGrad = mag(tauGrad);
+    if (alpha <= releaseAbove_ || magGrad <= VSMALL)
+    {
+        return Zero;
+    }
+    return -tauGrad/magGrad*meanFreePath(alpha, radius)/deltaT;
 }
 
 
