@@ -10,7 +10,9 @@ and prints, over t0 <= t <= end (default t0: 0.4 x end, after the start-up):
       (the buoyancy, rho_g/rho_p = 4.8e-4 of it, is left in);
     - its standard deviation and the standard error of the mean from the
       autocorrelation of the series (blocks of 0.25 s);
-    - the largest cell solids fraction over the window (packingMonitor);
+    - the largest cell solids fraction over the window (packingMonitor),
+      and the largest of the field the model reads (the averaging's: the
+      linear hat's with -packing mfixSnider) at every step of the run;
     - the mean upward force of the packing step over the weight,
       sum(m dU_y)/dt/(m g) (packingMonitor): where the weight goes that the
       gas does not carry (every cell of this 2-cell-deep box touches a
@@ -24,6 +26,10 @@ Usage:
         [--row [--wallTime S] [--failure TEXT]] [--tableHead] [--plot]
     --row   one markdown table row (TABLE_HEAD; bin/compareSolvers)
     --plot  uniformFluidization_<label>_pressureDrop.png: deltaP/weight(t)
+    uniformFluidizationResults.py --largest DIR:LABEL [DIR:LABEL ...]
+        uniformFluidization_largestSolidsFraction.png: the largest
+        solids fraction of the model's field at every step of each run,
+        against the bound 1.15 x 0.6 = 0.69
 """
 import argparse
 import math
@@ -141,12 +147,13 @@ def summary(case, t0=None):
     mean, std, error = mean_and_error(series, 0.25)
     rows = [r for r in monitor(case) if r[0] >= t0 - 1e-12]
     max_cell = max(r[4] for r in rows) if rows else float("nan")
+    max_field = max(r[3] for r in monitor(case))
     packing = packing_force(rows)
     walls = wall_share(case, t0, series[-1][0], mean, packing,
                        rows[-1][2]) if rows else None
     return {"t0": t0, "t1": series[-1][0], "ratio": mean, "std": std,
             "error": error, "maxCell": max_cell, "packing": packing,
-            "walls": walls, "series": everything}
+            "walls": walls, "series": everything, "maxField": max_field}
 
 
 def plot(res, case, label):
@@ -172,6 +179,31 @@ def plot(res, case, label):
     print("wrote", path)
 
 
+def plot_largest(runs, bound=0.69):
+    """The largest solids fraction of the model's field against time, one
+    line per run (DIR:LABEL), with the bound."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(8, 3.6))
+    for run in runs:
+        case, _, label = run.partition(":")
+        rows = monitor(case)
+        ax.plot([r[0] for r in rows], [r[3] for r in rows], lw=0.6,
+                label="%s (max %.3f)" % (label or case, max(r[3] for r in rows)))
+    ax.axhline(bound, color="k", lw=1, ls="--",
+               label="bound 1.15 x 0.6 = %.2f" % bound)
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("largest solids fraction")
+    ax.set_ylim(0.4, 0.9)
+    ax.set_title("uniform fluidization, mfixSnider: the model's field (linear hat)")
+    ax.legend(fontsize=8, loc="lower center", ncol=2)
+    fig.tight_layout()
+    path = "uniformFluidization_largestSolidsFraction.png"
+    fig.savefig(path, dpi=100)
+    print("wrote", path)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--case", default=".")
@@ -183,7 +215,11 @@ def main():
     parser.add_argument("--tableHead", action="store_true")
     parser.add_argument("--wallTime", type=float, default=None)
     parser.add_argument("--failure", default="")
+    parser.add_argument("--largest", nargs="+", metavar="DIR:LABEL")
     args = parser.parse_args()
+    if args.largest:
+        plot_largest(args.largest)
+        return 0
     if args.tableHead:
         print(TABLE_HEAD)
         return 0
@@ -199,10 +235,11 @@ def main():
         print("%s: (deltaP - gas head)/weight over %g-%g s = %.4f "
               "(std %.3f, standard error of the mean %.4f); packing force "
               "%.4f x weight; walls (distributor) %s x weight, by the "
-              "momentum budget; max cell solids fraction %.3f"
+              "momentum budget; max cell solids fraction %.3f; the model's "
+              "field at most %.4f at every step"
               % (args.label, res["t0"], res["t1"], res["ratio"], res["std"],
                  res["error"], res["packing"], "-" if res["walls"] is None
-                 else "%.4f" % res["walls"], res["maxCell"]))
+                 else "%.4f" % res["walls"], res["maxCell"], res["maxField"]))
     if args.plot:
         plot(res, args.case, args.label)
     return 0
