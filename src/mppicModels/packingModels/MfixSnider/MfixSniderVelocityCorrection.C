@@ -5,8 +5,10 @@
 Description
     MfixSnider's velocity correction of one parcel: the limited impulse,
     the optional travel cap, damping and release, the capacity limit, the
-    reactions and the boundary rule (see MfixSnider.H). The one place that
-    writes the parcel's corrected velocity.
+    reactions and the boundary rule (see MfixSnider.H). Where the parcel's
+    corrected velocity is written (as kept - move: OpenFOAM adds the move
+    back after the correction track); with conserveMomentum, PackReactions
+    adds the packs' reactions at the end of the step.
 
 \*---------------------------------------------------------------------------*/
 
@@ -112,7 +114,7 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
         // forms the mean solids velocity; without this the mean of the
         // parcels held at a wall points into it, and the limiter's
         // reflection about that mean drives them faster into the wall
-        // every step (to 19 m/s in five steps, measured, issue 18)
+        // every step (-5 to -19 m/s in four steps, measured, issue 18)
         kept =
             cellFaceGeometry::withoutVelocityIntoBoundary
             (
