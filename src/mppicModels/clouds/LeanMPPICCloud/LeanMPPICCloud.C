@@ -6,6 +6,7 @@
 #include "LeanMPPICCloud.H"
 #include "MfixPackingModel.H"
 #include "DynamicList.H"
+#include <algorithm>
 #include <type_traits>
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
@@ -35,6 +36,74 @@ Foam::LeanMPPICCloud<CloudType>::readStep() const
             << exit(FatalIOError);
     }
     return stepTypeNames.get(name);
+}
+
+
+template<class CloudType>
+Foam::label Foam::LeanMPPICCloud<CloudType>::readSortParcelsEvery() const
+{
+    const dictionary& dict = this->particleProperties();
+    const label n = dict.getOrDefault<label>("sortParcelsEvery", 0);
+    if (n < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "sortParcelsEvery " << n << " in " << dict.name()
+            << ": allowed range integer >= 0 (0: never)"
+            << exit(FatalIOError);
+    }
+    return n;
+}
+
+
+template<class CloudType>
+void Foam::LeanMPPICCloud<CloudType>::sortParcels()
+{
+    const label timeIndex = this->db().time().timeIndex();
+    if
+    (
+        sortParcelsEvery_ == 0
+     || timeIndex % sortParcelsEvery_ != 0
+     || timeIndex == sortedIndex_
+    )
+    {
+        return;
+    }
+    sortedIndex_ = timeIndex;
+
+    const label n = this->size();
+    List<parcelType*> parcels(n);
+    label i = 0;
+    for (parcelType& p : *this)
+    {
+        parcels[i++] = &p;
+    }
+
+    labelList order(identity(n));
+    std::stable_sort
+    (
+        order.begin(),
+        order.end(),
+        [&parcels](const label a, const label b)
+        {
+            return parcels[a]->cell() < parcels[b]->cell();
+        }
+    );
+
+    // All copies first, so that they take consecutive allocations rather
+    // than the places of the parcels they replace
+    List<parcelType*> copies(n);
+    forAll(order, j)
+    {
+        copies[j] = new parcelType(*parcels[order[j]]);
+    }
+    for (parcelType* p : parcels)
+    {
+        delete this->remove(p);
+    }
+    for (parcelType* p : copies)
+    {
+        this->append(p);
+    }
 }
 
 
@@ -224,6 +293,8 @@ void Foam::LeanMPPICCloud<CloudType>::motion
     typename parcelType::trackingData& td
 )
 {
+    sortParcels();
+
     if (step_ == stepType::MPPICCloud)
     {
         CloudType::motion(cloud, td);
