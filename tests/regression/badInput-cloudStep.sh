@@ -7,20 +7,11 @@
 #   sortParcelsEvery -1: allowed range integer >= 0.
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
-prepareCase "$runDir/case"
+prepareCase "$runDir/prepared"
 status=0
 
-cp -r "$runDir/case" "$runDir/step"
-echo "cloudStep leen;" >> "$runDir/step/constant/kinematicCloudProperties"
-runBroken "$runDir/step" mppicPimpleFoam
-check fatal "$runDir/step/log.broken" $rc "cloudStep leen in" \
-    "allowed values 2(MPPICCloud lean)" || status=1
-stoppedBeforeFirstStep "$runDir/step/log.broken" $rc || status=1
-
-cp -r "$runDir/case" "$runDir/sort"
-echo "sortParcelsEvery -1;" >> "$runDir/sort/constant/kinematicCloudProperties"
-runBroken "$runDir/sort" mppicPimpleFoam
-check fatal "$runDir/sort/log.broken" $rc "sortParcelsEvery -1 in" \
-    "allowed range integer >= 0" || status=1
-stoppedBeforeFirstStep "$runDir/sort/log.broken" $rc || status=1
+tryBroken cloudStepMisspelt cloudStep leen \
+    "cloudStep leen in" "allowed values 2(MPPICCloud lean)"
+tryBroken negativeSortParcelsEvery sortParcelsEvery -1 \
+    "sortParcelsEvery -1 in" "allowed range integer >= 0"
 exit $status

@@ -61,13 +61,8 @@ check sameState "$runDir/every0" "$runDir/every1" 0.0015 1e-9 \
 import os, sys
 import numpy as np
 sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
-from checks import read_rows
-
-failed = 0
-def report(ok, what):
-    global failed
-    print(("PASS " if ok else "FAIL ") + what)
-    failed += not ok
+import checks
+from checks import read_rows, report
 
 def cloud(time):
     d = os.path.join(time, "lagrangian", "kinematicCloud")
@@ -93,6 +88,6 @@ report(out_of_order(c1) < 0.01, "sorted list in cell order: %.4f of neighbouring
        " pairs out of order (< 0.01)" % out_of_order(c1))
 report(out_of_order(c0) > 0.30, "unsorted (shuffled) list: %.4f of neighbouring"
        " pairs out of order (> 0.30)" % out_of_order(c0))
-sys.exit(1 if failed else 0)
+sys.exit(1 if checks.failures else 0)
 PY
 exit $status
