@@ -43,7 +43,7 @@ template<class CloudType>
 Foam::label Foam::LeanMPPICCloud<CloudType>::readSortParcelsEvery() const
 {
     const dictionary& dict = this->particleProperties();
-    const label n = dict.getOrDefault<label>("sortParcelsEvery", 20);
+    const label n = dict.getOrDefault<label>("sortParcelsEvery", 0);
     if (n < 0)
     {
         FatalIOErrorInFunction(dict)
