@@ -2,7 +2,7 @@
 # badInput-dragCoeffs <runDir>: constantCdDrag with Cd = -1,
 # linearRelaxationDrag with C = -5, GidaspowDrag with switchFraction 1.2,
 # with blend maybe, constantCdDrag with feedback maybe, SyamlalOBrienDrag
-# with c1 -1, and GidaspowDrag
+# with c1 -1, GidaspowDrag with slipFrom average, and GidaspowDrag
 # with alphac naming no field -> FatalError naming
 # the keyword and its range (or the field), exit status 1, no crash.
 . "${0%/*}/badInputFunctions"
@@ -15,6 +15,7 @@ for bad in "constantCdDrag { Cd -1; }:Cd:[0, inf)" \
            "GidaspowDrag { alphac alpha.air; blend maybe; }:blend:maybe" \
            "constantCdDrag { Cd 1; feedback maybe; }:feedback:maybe" \
            "SyamlalOBrienDrag { alphac alpha.air; c1 -1; }:c1:(0, inf)" \
+           "GidaspowDrag { alphac alpha.air; slipFrom average; }:slipFrom:average" \
            "GidaspowDrag { alphac alpha.gas; }:alphac:alpha.gas"
 do
     force="${bad%%:*}"

@@ -22,8 +22,13 @@ Description
         Sp = V_p*beta/(alpha_s*alpha_g) for the voidage laws.
 
     Also: Gidaspow's blend is continuous at the switch, feedback false
-    moves the drag to the explicit (non-coupled) part, and the coefficients
-    out of range raise FatalIOError naming the keyword and the range.
+    moves the drag to the explicit (non-coupled) part, slipFrom cellMean
+    takes the slip from the mass-weighted mean velocity of the cell's
+    parcels (two parcels of weights 1 and 3 at +1 and -1 m/s: mean -0.5
+    m/s, so the drag Su + Sp*(u_g - u_p) on a third parcel at rest is
+    Sp*(w + 0.5) with Sp of Gidaspow at the slip w + 0.5; in a cell
+    without parcels, its own velocity), and the coefficients out of range
+    raise FatalIOError naming the keyword and the range.
 
 \*---------------------------------------------------------------------------*/
 
@@ -393,7 +398,90 @@ int main(int argc, char *argv[])
         checkClose("feedback false: Su_x", Su.x(), 0, 0, 1);
     }
 
+    // slipFrom cellMean: the slip from the mean velocity of the cell's
+    // parcels at the step's start (cacheFields(true))
+    {
+        const label celli = mesh.findCell(centre);
+        const point elsewhere(0.5, 0.2, 0.05);
+        const label otherCelli = mesh.findCell(elsewhere);
+        checkTrue("slipFrom test: two different cells", otherCelli != celli);
+
+        const List<Pair<scalar>> weightAndUy
+        ({
+            Pair<scalar>(1, 1), Pair<scalar>(3, -1)
+        });
+        for (const Pair<scalar>& wu : weightAndUy)
+        {
+            parcelType* q = new parcelType(mesh, centre, celli);
+            q->d() = d;
+            q->rho() = rhop;
+            q->nParticle() = wu.first();
+            q->U() = vector(0, wu.second(), 0);
+            cloud.addParticle(q);
+        }
+        const scalar meanUy = (1*1 + 3*(-1))/4.0;
+
+        autoPtr<ParticleForce<cloudType>> force
+        (
+            select
+            (
+                cloud, mesh, "GidaspowDrag",
+                "alphac alpha.air; slipFrom cellMean;"
+            )
+        );
+        force->cacheFields(true);
+
+        const scalar ag = 0.45, w = 2;
+        setGas(ag, w);
+        vector Su;
+        const scalar Sp = coefficients(force(), cloud, p, Su).first();
+        const scalar slip = w - meanUy;
+        checkClose
+        (
+            "slipFrom cellMean: Sp at the cell mean's slip",
+            Sp,
+            handGidaspow(ag, slip, false)
+        );
+        checkClose
+        (
+            "slipFrom cellMean: drag Su + Sp*(u_g - u_p) = Sp*(u_g - u_s)",
+            Su.y() + Sp*w,
+            handGidaspow(ag, slip, false)*slip
+        );
+        checkClose("slipFrom cellMean: Su_x", Su.x(), 0, 0, 1);
+
+        parcelType lone(mesh, elsewhere, otherCelli);
+        lone.d() = d;
+        lone.rho() = rhop;
+        lone.nParticle() = 1;
+        lone.U() = vector(0, 0.5, 0);
+        const scalar SpLone = coefficients(force(), cloud, lone, Su).first();
+        checkClose
+        (
+            "slipFrom cellMean, empty cell: Sp at the parcel's own slip",
+            SpLone,
+            handGidaspow(ag, w - 0.5, false)
+        );
+        checkClose
+        (
+            "slipFrom cellMean, empty cell: no explicit part",
+            mag(Su), 0, 0, 1
+        );
+
+        cloud.clear();
+    }
+
     // Bad coefficients
+    checkTrue
+    (
+        "GidaspowDrag slipFrom average rejected",
+        rejects
+        (
+            cloud, mesh, "GidaspowDrag",
+            "alphac alpha.air; slipFrom average;",
+            {"slipFrom", "average", "cellMean"}
+        )
+    );
     checkTrue
     (
         "SyamlalOBrienDrag c1 0 rejected",

@@ -5,6 +5,46 @@
 
 #include "MppicDragForce.H"
 
+// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::Enum
+<
+    typename Foam::MppicDragForce<CloudType>::slipSource
+>
+Foam::MppicDragForce<CloudType>::slipSourceNames
+({
+    { slipSource::parcel, "parcel" },
+    { slipSource::cellMean, "cellMean" },
+});
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+typename Foam::MppicDragForce<CloudType>::slipSource
+Foam::MppicDragForce<CloudType>::readSlipSource(const dictionary& coeffs)
+{
+    const word name
+    (
+        coeffs.lookupOrDefault<word>
+        (
+            "slipFrom",
+            slipSourceNames[slipSource::parcel]
+        )
+    );
+
+    if (!slipSourceNames.found(name))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Dictionary " << coeffs.name() << ", keyword slipFrom: value "
+            << name << " is not one of " << slipSourceNames.toc()
+            << exit(FatalIOError);
+    }
+    return slipSourceNames[name];
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -17,7 +57,10 @@ Foam::MppicDragForce<CloudType>::MppicDragForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, forceType, true),
-    feedback_(this->coeffs().lookupOrDefault("feedback", true))
+    feedback_(this->coeffs().lookupOrDefault("feedback", true)),
+    slipFrom_(readSlipSource(this->coeffs())),
+    cellMeanU_(),
+    cellHasMean_()
 {}
 
 
@@ -28,11 +71,48 @@ Foam::MppicDragForce<CloudType>::MppicDragForce
 )
 :
     ParticleForce<CloudType>(df),
-    feedback_(df.feedback_)
+    feedback_(df.feedback_),
+    slipFrom_(df.slipFrom_),
+    cellMeanU_(df.cellMeanU_),
+    cellHasMean_(df.cellHasMean_)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::MppicDragForce<CloudType>::cacheFields(const bool store)
+{
+    ParticleForce<CloudType>::cacheFields(store);
+
+    if (!store || slipFrom_ != slipSource::cellMean)
+    {
+        return;
+    }
+
+    const label nCells = this->mesh().nCells();
+    List<scalar> cellMass(nCells, Zero);
+    cellMeanU_.setSize(nCells);
+    cellMeanU_ = Zero;
+
+    for (const typename CloudType::parcelType& p : this->owner())
+    {
+        const scalar m = p.nParticle()*p.mass();
+        cellMass[p.cell()] += m;
+        cellMeanU_[p.cell()] += m*p.U();
+    }
+
+    cellHasMean_.setSize(nCells);
+    forAll(cellMass, celli)
+    {
+        cellHasMean_[celli] = cellMass[celli] > 0;
+        if (cellHasMean_[celli])
+        {
+            cellMeanU_[celli] /= cellMass[celli];
+        }
+    }
+}
+
 
 template<class CloudType>
 Foam::forceSuSp Foam::MppicDragForce<CloudType>::calcNonCoupled
@@ -51,7 +131,7 @@ Foam::forceSuSp Foam::MppicDragForce<CloudType>::calcNonCoupled
     {
         return forceSuSp(Zero, 0);
     }
-    return forceSuSp(Sp(p, td, mass, muc)*(td.Uc() - p.U()), 0);
+    return forceSuSp(Sp(p, td, mass, muc)*(td.Uc() - solidsVelocity(p)), 0);
 }
 
 
@@ -66,7 +146,15 @@ Foam::forceSuSp Foam::MppicDragForce<CloudType>::calcCoupled
     const scalar muc
 ) const
 {
-    return forceSuSp(Zero, feedback_ ? Sp(p, td, mass, muc) : 0);
+    if (!feedback_)
+    {
+        return forceSuSp(Zero, 0);
+    }
+
+    // F = Su + Sp*(u_g - u_p) = Sp*(u_g - u_s): with slipFrom parcel
+    // u_s = u_p and Su = 0
+    const scalar Spp = Sp(p, td, mass, muc);
+    return forceSuSp(Spp*(p.U() - solidsVelocity(p)), Spp);
 }
 
 
