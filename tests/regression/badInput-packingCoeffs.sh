@@ -1,7 +1,9 @@
 #!/bin/bash
 # badInput-packingCoeffs <runDir>: coloringFunction with e1 = 1.5, then
 # with impulse sideways -> FatalIOError naming the keyword and the allowed
-# range or names, exit status 1, no crash (mppicPimpleFoam).
+# range or names; coloringFunction and mfixSnider with overfill 1.5 ->
+# FatalIOError naming overfill, 1.5 and [0, 1]; exit status 1, no crash
+# (mppicPimpleFoam).
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
 prepareCase "$runDir/case"
@@ -18,3 +20,17 @@ setEntry "$runDir/case" constant/kinematicCloudProperties \
     "{ closePackFraction 0.6; impulse sideways; }"
 runBroken "$runDir/case" mppicPimpleFoam
 check fatal "$runDir/case/log.broken" $rc "sideways" "impulse" "neighbour"
+status=$?
+
+# overfill outside [0, 1] (CapacityLimit), both models
+for model in coloringFunction mfixSnider
+do
+    setEntry "$runDir/case" constant/kinematicCloudProperties \
+        subModels/packingModel $model
+    setEntry "$runDir/case" constant/kinematicCloudProperties \
+        subModels/${model}Coeffs "{ closePackFraction 0.6; overfill 1.5; }"
+    runBroken "$runDir/case" mppicPimpleFoam
+    check fatal "$runDir/case/log.broken" $rc "overfill" "1.5" "[0, 1]" \
+        || status=1
+done
+exit $status

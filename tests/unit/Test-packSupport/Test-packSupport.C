@@ -42,10 +42,21 @@ Description
     keyword, the value and the patches allowed; supportAngle 0 and 95 ->
     FatalIOError naming the keyword, the value and (0, 90].
 
+    The capacity limit's room (cellRoom::fits, v <= room + overfill*v), by
+    hand, for parcels of 0.12 of a unit cell and close pack 0.62:
+      5 parcels (room 0.02): a sixth fits with overfill 1 (0.12 <= 0.14)
+        and 0.9 (0.128), not with 0.5 (0.08) or 0;
+      6 parcels (room -0.10): a seventh fits with none of them (1: 0.02);
+      4 parcels (room 0.14): a fifth fits with 0 (0.12 <= 0.14);
+    parcels of 0.2 and close pack 0.6, 3 parcels summed (room 0.6 - 3*0.2,
+    zero to round-off): a fourth fits with overfill 1, not with 0.5.
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "PackSupport.H"
+#include "cellRoom.H"
+#include "Tuple2.H"
 #include "unitTest.H"
 
 using namespace Foam::unitTest;
@@ -220,6 +231,51 @@ int main(int argc, char *argv[])
                 [&]() { PackSupport bad(mesh, badAngle); },
                 {"supportAngle", Foam::name(angle), "(0, 90]"}
             )
+        );
+    }
+
+    // The capacity limit's room
+    {
+        const scalar v = 0.12;
+        const scalar cp = 0.62;
+        const List<Tuple2<label, scalar>> fitting
+        ({
+            {5, 1}, {5, 0.9}, {4, 0}
+        });
+        const List<Tuple2<label, scalar>> notFitting
+        ({
+            {5, 0.5}, {5, 0}, {6, 1}, {6, 0.5}, {6, 0}
+        });
+        for (const Tuple2<label, scalar>& c : fitting)
+        {
+            checkTrue
+            (
+                "cellRoom: parcel " + Foam::name(c.first() + 1)
+              + " fits with overfill " + Foam::name(c.second()),
+                cellRoom::fits(v, cp - c.first()*v, c.second())
+            );
+        }
+        for (const Tuple2<label, scalar>& c : notFitting)
+        {
+            checkTrue
+            (
+                "cellRoom: parcel " + Foam::name(c.first() + 1)
+              + " does not fit with overfill " + Foam::name(c.second()),
+                !cellRoom::fits(v, cp - c.first()*v, c.second())
+            );
+        }
+        const scalar w = 0.2;
+        const scalar room = 0.6 - (w + w + w);
+        checkTrue
+        (
+            "cellRoom: a fourth of 0.2 at close pack 0.6 fits with overfill 1"
+            " (room " + Foam::name(room) + ")",
+            cellRoom::fits(w, room, 1)
+        );
+        checkTrue
+        (
+            "cellRoom: ... not with overfill 0.5",
+            !cellRoom::fits(w, room, 0.5)
         );
     }
 

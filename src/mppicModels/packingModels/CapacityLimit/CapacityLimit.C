@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "CapacityLimit.H"
+#include "cellRoom.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -16,6 +17,7 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
 )
 :
     holdSupportedPacks_(holdSupportedPacks),
+    overfill_(readOverfill(coeffs)),
     entries_(),
     support_(mesh, coeffs)
 {}
@@ -28,12 +30,30 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
 )
 :
     holdSupportedPacks_(cl.holdSupportedPacks_),
+    overfill_(cl.overfill_),
     entries_(),
     support_(cl.support_)
 {}
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::scalar Foam::CapacityLimit<CloudType>::readOverfill
+(
+    const dictionary& coeffs
+)
+{
+    const scalar overfill = coeffs.lookupOrDefault<scalar>("overfill", 0.5);
+    if (overfill < 0 || overfill > 1)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Dictionary " << coeffs.name() << ", keyword overfill: value "
+            << overfill << " is out of range [0, 1]" << exit(FatalIOError);
+    }
+    return overfill;
+}
+
 
 template<class CloudType>
 Foam::boolList Foam::CapacityLimit<CloudType>::fullCells
@@ -66,12 +86,15 @@ Foam::boolList Foam::CapacityLimit<CloudType>::fullCells
         largest = max(largest, entries_.returnedLargest());
     }
 
-    // No room for half of its largest parcel, as the entries are admitted
+    // No room for (1 - overfill) of its largest parcel, as the entries are
+    // admitted
     boolList full(mesh.nCells());
     forAll(full, celli)
     {
         const scalar room = closePackFraction*mesh.V()[celli] - volume[celli];
-        full[celli] = largest[celli] > 0 && room < 0.5*largest[celli];
+        full[celli] =
+            largest[celli] > 0
+         && !cellRoom::fits(largest[celli], room, overfill_);
     }
     return full;
 }
@@ -97,7 +120,7 @@ void Foam::CapacityLimit<CloudType>::startStep
     const scalar deltaT
 )
 {
-    entries_.update(cloud, closePackFraction, deltaT);
+    entries_.update(cloud, closePackFraction, overfill_, deltaT);
 
     if (!holdSupportedPacks_)
     {

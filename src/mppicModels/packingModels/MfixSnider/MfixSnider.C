@@ -16,7 +16,7 @@ Foam::PackingModels::MfixSnider<CloudType>::keywords
     "closePackFraction", "pSolid", "gamma", "eps", "e1",
     "slipVelocityFactor", "capFactor", "meanFreePathCap",
     "restWhereConverging", "releaseAbove", "collisionDamping", "capacityLimit",
-    "holdSupportedPacks", "supportPatches", "supportAngle",
+    "holdSupportedPacks", "supportPatches", "supportAngle", "overfill",
     "conserveMomentum"
 });
 

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ParcelEntries.H"
+#include "cellRoom.H"
 #include "coupledPolyPatch.H"
 #include "cellFaceGeometry.H"
 #include <algorithm>
@@ -68,6 +69,7 @@ void Foam::ParcelEntries<CloudType>::update
 (
     const CloudType& cloud,
     const scalar closePackFraction,
+    const scalar overfill,
     const scalar deltaT
 )
 {
@@ -217,7 +219,10 @@ void Foam::ParcelEntries<CloudType>::update
 
     startFraction_ = startVolume/mesh.V();
 
-    admitUpToClosePack(mesh, closePackFraction, keptVolume, entrants);
+    admitUpToClosePack
+    (
+        mesh, closePackFraction, overfill, keptVolume, entrants
+    );
 }
 
 
@@ -226,6 +231,7 @@ void Foam::ParcelEntries<CloudType>::admitUpToClosePack
 (
     const fvMesh& mesh,
     const scalar closePackFraction,
+    const scalar overfill,
     scalarField& keptVolume,
     List<DynamicList<entrant>>& entrants
 )
@@ -267,8 +273,9 @@ void Foam::ParcelEntries<CloudType>::admitUpToClosePack
         {
             const label celli = pending.remove();
 
-            // Room up to close pack, to the nearest parcel: a cell takes
-            // the parcel count that comes closest to close pack
+            // Room up to close pack: a cell takes entrants while it stays
+            // within overfill parcels above close pack (0.5: the parcel
+            // count that comes closest to close pack)
             scalar room =
                 closePackFraction*mesh.V()[celli] - keptVolume[celli];
 
@@ -279,7 +286,7 @@ void Foam::ParcelEntries<CloudType>::admitUpToClosePack
                 {
                     continue;
                 }
-                if (candidate.volume <= room + 0.5*candidate.volume)
+                if (cellRoom::fits(candidate.volume, room, overfill))
                 {
                     room -= candidate.volume;
                     continue;
