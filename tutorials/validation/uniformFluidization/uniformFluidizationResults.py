@@ -19,7 +19,12 @@ and prints, over t0 <= t <= end (default t0: 0.4 x end, after the start-up):
       wall, so the monitor's wall part is all of it and is not shown);
     - the rest, held by the walls' rebounds (the distributor's: the side
       walls are frictionless), from the cloud's momentum budget with its
-      vertical momentum at the written times nearest the window's ends.
+      vertical momentum at the written times nearest the window's ends;
+    - how much the bed moves: the median distance the parcels travelled
+      between the last two written times, per second (parcels matched by
+      origId). A bubbling bed stirs its parcels by centimetres per second;
+      a bed that does not bubble (a static, layered packing) by a few
+      millimetres.
 
 Usage:
     uniformFluidizationResults.py [--case DIR] [--from T0] [--label L]
@@ -137,6 +142,29 @@ def wall_share(case, t0, t1, ratio, packing, mass, g=9.81):
     return rate + 1 - ratio - packing
 
 
+def median_travel(case):
+    """(t_a, t_b, median |X(t_b) - X(t_a)|/(t_b - t_a) in m/s) of the
+    parcels, matched by origId, between the last two written times; None
+    without two."""
+    times = sorted((d for d in os.listdir(case) if re.match(r"^[0-9.]+$", d)
+                    and os.path.isdir(os.path.join(case, d, "lagrangian"))),
+                   key=float)
+    if len(times) < 2:
+        return None
+    where = []
+    for t in times[-2:]:
+        d = os.path.join(case, t, "lagrangian", "kinematicCloud")
+        ids = [int(v[0]) for v in lagrangian_field(os.path.join(d, "origId"))]
+        pos = lagrangian_field(os.path.join(d, "positions"))
+        where.append(dict(zip(ids, pos)))
+    a, b = where
+    dist = sorted(math.dist(a[i][:3], b[i][:3]) for i in a if i in b)
+    if not dist:
+        return None
+    ta, tb = float(times[-2]), float(times[-1])
+    return ta, tb, dist[len(dist)//2]/(tb - ta)
+
+
 def summary(case, t0=None):
     everything = pressure_ratio(case)
     if t0 is None:
@@ -153,7 +181,8 @@ def summary(case, t0=None):
                        rows[-1][2]) if rows else None
     return {"t0": t0, "t1": series[-1][0], "ratio": mean, "std": std,
             "error": error, "maxCell": max_cell, "packing": packing,
-            "walls": walls, "series": everything, "maxField": max_field}
+            "walls": walls, "series": everything, "maxField": max_field,
+            "travel": median_travel(case)}
 
 
 def plot(res, case, label):
@@ -240,6 +269,10 @@ def main():
               % (args.label, res["t0"], res["t1"], res["ratio"], res["std"],
                  res["error"], res["packing"], "-" if res["walls"] is None
                  else "%.4f" % res["walls"], res["maxCell"], res["maxField"]))
+        if res["travel"]:
+            print("%s: the parcels moved a median %.1f mm/s between %g and "
+                  "%g s" % (args.label, 1e3*res["travel"][2],
+                            res["travel"][0], res["travel"][1]))
     if args.plot:
         plot(res, args.case, args.label)
     return 0
