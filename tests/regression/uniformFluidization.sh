@@ -31,7 +31,7 @@ def check(ok, what):
     print(("PASS " if ok else "FAIL ") + what)
     failures += not ok
 weight = 0.1*0.12*0.01*0.6*2500*9.81/0.001
-rows = u.read_table("postProcessing/bedPressureDrop/0/bedPressureDrop.dat")
+rows = u.post.read_table("postProcessing/bedPressureDrop/0/bedPressureDrop.dat")
 check(all(abs(r[5]/weight - 1) < 1e-9 for r in rows),
       "weight per area %.4f Pa = %.4f Pa at every step" % (rows[-1][5], weight))
 res = u.summary(".", 1.2)

@@ -21,6 +21,11 @@ and prints:
     start averageStart of system/controlDict): mean / bed weight, standard
     deviation and half the 5-95 % range (fluctuation amplitude), in Pa; the
     bed weight is m g/(0.57 m x 0.015 m), over the whole bottom;
+  - where the rest of the weight goes over the window: the packing step's
+    mean upward force over the weight (packingMonitor) and what neither it
+    nor the gas carries, from the cloud's vertical momentum written at the
+    window's ends: the walls' rebounds, frictionless here, so the
+    distributor's (tutorials/lib/mppicPost.py);
   - the largest cell solids fraction over all steps, the 99th percentile of
     the per-step largest value, the smallest gas fraction, against the
     bound max(1.05 alpha_cp, alpha_cp + V_parcel/V_cell) (a cell-based field
@@ -48,68 +53,21 @@ import argparse
 import glob
 import math
 import os
-import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", ".."),
+                                "tutorials", "lib"))
 import kuipersJetSlabs as slabs  # noqa: E402 (beside this file)
+import mppicPost as post  # noqa: E402 (tutorials/lib)
+from mppicPost import (control_entry, function_object_table,  # noqa: E402
+                       internal_field, interpolate, percentile, time_dirs)
 
 WIDTH, DEPTH, G = 0.57, 0.015, 9.81
 CLOSE_PACK, AXIS = 0.62, 0.285
 CELL_VOLUME = 0.0075*0.01*0.0075
-
-
-def read_columns(path):
-    rows = []
-    for line in open(path):
-        if line.strip() and not line.startswith("#"):
-            try:
-                rows.append([float(v) for v in line.split()])
-            except ValueError:
-                pass
-    return rows
-
-
-def function_object_table(case, name):
-    """Rows of postProcessing/<name>/<start>/<name>.dat, restarts joined."""
-    rows = []
-    for path in sorted(glob.glob(os.path.join(case, "postProcessing", name, "*",
-                                              name + ".dat")),
-                       key=lambda p: float(p.split(os.sep)[-2])):
-        new = read_columns(path)
-        if new:
-            rows = [r for r in rows if r[0] < new[0][0]] + new
-    return rows
-
-
-def control_entry(case, key):
-    m = re.search(r"^%s\s+([^;]+);" % key,
-                  open(os.path.join(case, "system", "controlDict")).read(), re.M)
-    return m.group(1).strip() if m else None
-
-
-def time_dirs(case):
-    out = []
-    for d in os.listdir(case):
-        try:
-            out.append((float(d), d))
-        except ValueError:
-            pass
-    return sorted(out)
-
-
-def internal_field(path):
-    text = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\((.*?)\)\s*;",
-                  text, re.S)
-    if m is None:
-        m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
-        return float(m.group(1))
-    if m.group(1) == "vector":
-        return [tuple(map(float, v.split()))
-                for v in re.findall(r"\(([^()]*)\)", m.group(3))]
-    return [float(v) for v in m.group(3).split()]
 
 
 def solids_field(case, time, mean=False):
@@ -170,7 +128,7 @@ def sampled_profiles(case):
             if not files:
                 continue
             fields = os.path.basename(files[0])[:-3].split("_")[1:]
-            rows = read_columns(files[0])
+            rows = post.read_table(files[0])
             if "alpha.kinematicCloudMean" in fields:
                 k = 1 + fields.index("alpha.kinematicCloudMean")
                 sides.append([(r[0], r[k]) for r in rows])
@@ -197,30 +155,10 @@ def reference_profiles():
     return {k: sorted(v) for k, v in data.items()}
 
 
-def interpolate(xs, ys, x):
-    if x < xs[0] or x > xs[-1]:
-        return None
-    for k in range(1, len(xs)):
-        if x <= xs[k]:
-            w = (x - xs[k - 1])/(xs[k] - xs[k - 1]) if xs[k] > xs[k - 1] else 0
-            return ys[k - 1] + w*(ys[k] - ys[k - 1])
-    return ys[-1]
-
-
 def mean_abs_difference(h, eps, measured):
     diffs = [abs(v - e) for hm, e in measured
              for v in [interpolate(h, eps, hm)] if v is not None]
     return sum(diffs)/len(diffs) if diffs else float("nan")
-
-
-def percentile(values, q):
-    s = sorted(values)
-    if not s:
-        return float("nan")
-    pos = q/100*(len(s) - 1)
-    lo = int(math.floor(pos))
-    hi = min(lo + 1, len(s) - 1)
-    return s[lo] + (pos - lo)*(s[hi] - s[lo])
 
 
 def summary(case, t0=None):
@@ -251,6 +189,12 @@ def summary(case, t0=None):
         res["dpRatio"] = mean/res["weight"]
         res["dpStd"] = math.sqrt(sum((v - mean)**2 for v in window)/len(window))
         res["dpAmplitude"] = 0.5*(percentile(window, 95) - percentile(window, 5))
+        rows = [r for r in mon if r[0] >= t0 - 1e-9]
+        res["packing"] = post.packing_force(rows, mon[0][2], G)
+        rest = post.weight_rest(case, t0, mon[-1][0],
+                                res["dpRatio"] + res["packing"], mon[0][2], G)
+        if rest is not None:
+            res["walls"] = rest
     times = time_dirs(case)
     if os.path.exists(os.path.join(case, "0", "C")) and len(times) > 1:
         cells, xs, ys = cell_grid(case)
@@ -308,6 +252,12 @@ def print_report(res, label):
              fmt(res, "dpStd", "%.1f"), fmt(res, "dpAmplitude", "%.1f")))
     print("  reference deltaP/weight (seed 1 Fig. 7, 20-24 s): MFiX-PIC 0.916,"
           " MFiX-TFM 1.026, CPFD 1.089")
+    if "packing" in res:
+        print("  the weight over the window: the gas (deltaP) %s, the packing"
+              " step %s, the walls' rebounds (the rest of the cloud's momentum"
+              " budget) %s" % (fmt(res, "dpRatio", "%.3f"),
+                               fmt(res, "packing", "%.3f"),
+                               fmt(res, "walls", "%.3f")))
     if "maxCell" in res:
         print("  cell solids fraction: max %.4f, 99th percentile of the per-step"
               " max %.4f, max of the model's averaging %.4f, min gas fraction"

@@ -42,104 +42,27 @@ import os
 import re
 import sys
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", "..", ".."),
+                                "tutorials", "lib"))
+import mppicPost as post  # noqa: E402 (tutorials/lib)
+
 TABLE_HEAD = ("| run | window [s] | deltaP / weight | std | std error of mean "
               "| packing force / weight | max cell eps_s | wall s / sim s "
               "| failed |\n|---|---|---|---|---|---|---|---|---|")
 
 
-def read_table(path):
-    """Rows of a function object's .dat file (comment lines skipped)."""
-    rows = []
-    for line in open(path):
-        if line.startswith("#") or not line.strip():
-            continue
-        rows.append([float(v) for v in line.split()])
-    return rows
-
-
 def pressure_ratio(case):
     """(t, (deltaP - gas head)/(W/A)) for every step."""
-    rows = read_table(os.path.join(case, "postProcessing", "bedPressureDrop",
-                                   "0", "bedPressureDrop.dat"))
+    rows = post.function_object_table(case, "bedPressureDrop")
     # columns: time pLower pUpper deltaP gasHead weightPerArea ratio
     return [(r[0], (r[3] - r[4])/r[5]) for r in rows]
 
 
 def monitor(case):
     """packingMonitor rows: time, parcels, mass, max averaged, max cell..."""
-    return read_table(os.path.join(case, "postProcessing", "packingMonitor",
-                                   "0", "packingMonitor.dat"))
-
-
-def mean_and_error(series, block):
-    """Mean, standard deviation and the standard error of the mean from
-    the means of consecutive blocks of the given duration."""
-    values = [v for _, v in series]
-    n = len(values)
-    mean = sum(values)/n
-    std = math.sqrt(sum((v - mean)**2 for v in values)/n)
-    dt = (series[-1][0] - series[0][0])/max(n - 1, 1)
-    size = max(1, int(round(block/dt)))
-    blocks = [values[i:i + size] for i in range(0, n - size + 1, size)]
-    if len(blocks) < 2:
-        return mean, std, float("nan")
-    means = [sum(b)/len(b) for b in blocks]
-    spread = math.sqrt(sum((m - mean)**2 for m in means)/(len(means) - 1))
-    return mean, std, spread/math.sqrt(len(means))
-
-
-def packing_force(rows, g=9.81):
-    """Mean upward force of the packing step over the cloud's weight
-    (packingMonitor: the momentum it adds per step)."""
-    if len(rows) < 2:
-        return float("nan")
-    duration = rows[-1][0] - rows[0][0] + (rows[1][0] - rows[0][0])
-    return sum(r[9] for r in rows)/duration/(rows[-1][2]*g)
-
-
-def lagrangian_field(path):
-    """Values of a written lagrangian field (uniform N{v} or a list)."""
-    text = open(path).read()
-    text = text[text.index("}", text.index("FoamFile")) + 1:]
-    m = re.search(r"(\d+)\s*\{([^}]*)\}", text)
-    if m and (text.find("(") < 0 or text.find("(") > m.start()):
-        value = [float(v) for v in m.group(2).strip("() \n").split()]
-        return [value]*int(m.group(1))
-    body = text[text.index("(") + 1:text.rindex(")")]
-    if "(" in body:
-        return [[float(v) for v in t.split()]
-                for t in re.findall(r"\(([^()]*)\)", body)]
-    return [[float(v)] for v in body.split()]
-
-
-def cloud_momentum(case, time):
-    """Vertical momentum of the cloud written at a time, kg m/s."""
-    d = os.path.join(case, time, "lagrangian", "kinematicCloud")
-    if not os.path.isdir(d):
-        return None
-    fields = [lagrangian_field(os.path.join(d, f))
-              for f in ("nParticle", "rho", "d", "U")]
-    return sum(n[0]*rho[0]*math.pi/6*dia[0]**3*u[1]
-               for n, rho, dia, u in zip(*fields))
-
-
-def wall_share(case, t0, t1, ratio, packing, mass, g=9.81):
-    """The rest of the weight, held by the walls (the distributor: the side
-    walls rebound without friction), from the cloud's momentum budget over
-    the window, d(P_y)/dt = (ratio + packing + walls - 1) M g, with the
-    momentum at the written times nearest the window's ends; None without
-    them."""
-    times = [d for d in os.listdir(case) if re.match(r"^[0-9.]+$", d)]
-    def nearest(t):
-        return min(times, key=lambda d: abs(float(d) - t)) if times else None
-    a, b = nearest(t0), nearest(t1)
-    if a is None or a == b:
-        return None
-    pa, pb = cloud_momentum(case, a), cloud_momentum(case, b)
-    if pa is None or pb is None:
-        return None
-    rate = (pb - pa)/(float(b) - float(a))/(mass*g)
-    return rate + 1 - ratio - packing
+    return post.function_object_table(case, "packingMonitor")
 
 
 def median_travel(case):
@@ -154,8 +77,9 @@ def median_travel(case):
     where = []
     for t in times[-2:]:
         d = os.path.join(case, t, "lagrangian", "kinematicCloud")
-        ids = [int(v[0]) for v in lagrangian_field(os.path.join(d, "origId"))]
-        pos = lagrangian_field(os.path.join(d, "positions"))
+        ids = [int(v[0])
+               for v in post.lagrangian_field(os.path.join(d, "origId"))]
+        pos = post.lagrangian_field(os.path.join(d, "positions"))
         where.append(dict(zip(ids, pos)))
     a, b = where
     dist = sorted(math.dist(a[i][:3], b[i][:3]) for i in a if i in b)
@@ -172,13 +96,13 @@ def summary(case, t0=None):
     series = [(t, r) for t, r in everything if t >= t0 - 1e-12]
     if not series:
         raise SystemExit("no bedPressureDrop samples after %g s in %s" % (t0, case))
-    mean, std, error = mean_and_error(series, 0.25)
+    mean, std, error = post.mean_and_error(series, 0.25)
     rows = [r for r in monitor(case) if r[0] >= t0 - 1e-12]
     max_cell = max(r[4] for r in rows) if rows else float("nan")
     max_field = max(r[3] for r in monitor(case))
-    packing = packing_force(rows)
-    walls = wall_share(case, t0, series[-1][0], mean, packing,
-                       rows[-1][2]) if rows else None
+    packing = post.packing_force(rows)
+    walls = post.weight_rest(case, t0, series[-1][0], mean + packing,
+                             rows[-1][2]) if rows else None
     return {"t0": t0, "t1": series[-1][0], "ratio": mean, "std": std,
             "error": error, "maxCell": max_cell, "packing": packing,
             "walls": walls, "series": everything, "maxField": max_field,

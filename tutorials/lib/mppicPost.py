@@ -1,0 +1,198 @@
+"""What the tutorials' results scripts share: reading a case's output and
+the statistics and bookkeeping of a bed.
+
+Readers (OpenFOAM ascii output of a case folder):
+    function_object_table(case, name)  postProcessing/<name>/<t>/<name>.dat,
+                                       the pieces of a continued run joined
+    control_entry(case, key)           a top-level entry of system/controlDict
+    time_dirs(case)                    [(t, folder name)] of the written times
+    internal_field(path)               a volField's internalField
+    lagrangian_field(path)             a written cloud field, one row a parcel
+
+Statistics:
+    percentile(values, q)              linear between order statistics
+    mean_and_error(series, block)      mean, std and the standard error of
+                                       the mean from block means
+    interpolate(xs, ys, x)             linear, None outside [xs[0], xs[-1]]
+
+A bed's vertical momentum budget over a window (packingMonitor's columns):
+    packing_force(rows, mass)          the packing step's mean upward force
+                                       over the cloud's weight
+    cloud_momentum(case, time)         the cloud's vertical momentum written
+                                       at a time
+    weight_rest(case, t0, t1, carried, mass)
+                                       what neither the gas nor the packing
+                                       step carries: the walls' rebounds
+
+Scripts find this module through $MPPIC_PROJECT_DIR (etc/bashrc), else
+through the tutorials folder they sit in:
+    sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR",
+                                    <the project>), "tutorials", "lib"))
+"""
+import glob
+import math
+import os
+import re
+
+import numpy as np
+
+# packingMonitor.dat columns (src/mppicModels/functionObjects/packingMonitor)
+MONITOR_MASS, MONITOR_PACKING_Y = 2, 9
+
+
+# * * * * * * * * * * * * * * * * Readers  * * * * * * * * * * * * * * * * * #
+
+def read_table(path):
+    """Rows of a function object's .dat file (comment lines and lines that
+    are not numbers skipped), as a list of float lists."""
+    rows = []
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        try:
+            rows.append([float(v) for v in line.split()])
+        except ValueError:
+            pass
+    return rows
+
+
+def function_object_table(case, name):
+    """Rows of postProcessing/<name>/<start>/<name>.dat; a continued run
+    writes a folder per start time, and its rows replace the earlier
+    pieces' rows from its first time on."""
+    rows = []
+    paths = glob.glob(os.path.join(case, "postProcessing", name, "*",
+                                   name + ".dat"))
+    for path in sorted(paths, key=lambda p: float(p.split(os.sep)[-2])):
+        new = read_table(path)
+        if new:
+            rows = [r for r in rows if r[0] < new[0][0]] + new
+    return rows
+
+
+def control_entry(case, key):
+    """A top-level entry of system/controlDict, as text (None if absent)."""
+    text = open(os.path.join(case, "system", "controlDict")).read()
+    m = re.search(r"^%s\s+([^;]+);" % key, text, re.M)
+    return m.group(1).strip() if m else None
+
+
+def time_dirs(case):
+    """[(t, folder name)] of the case's time folders, by time."""
+    out = []
+    for d in os.listdir(case):
+        try:
+            out.append((float(d), d))
+        except ValueError:
+            pass
+    return sorted(out)
+
+
+def internal_field(path):
+    """A volField's internalField: a float if uniform, else a list of
+    floats or of vector tuples."""
+    text = open(path).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*"
+                  r"\((.*?)\)\s*;", text, re.S)
+    if m is None:
+        m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
+        return float(m.group(1))
+    if m.group(1) == "vector":
+        return [tuple(map(float, v.split()))
+                for v in re.findall(r"\(([^()]*)\)", m.group(3))]
+    return [float(v) for v in m.group(3).split()]
+
+
+def lagrangian_field(path):
+    """A written cloud field, one list of floats per parcel (a uniform
+    N{value} expanded)."""
+    text = open(path).read()
+    text = text[text.index("}", text.index("FoamFile")) + 1:]
+    m = re.search(r"(\d+)\s*\{([^}]*)\}", text)
+    if m and (text.find("(") < 0 or text.find("(") > m.start()):
+        value = [float(v) for v in m.group(2).strip("() \n").split()]
+        return [value]*int(m.group(1))
+    body = text[text.index("(") + 1:text.rindex(")")]
+    if "(" in body:
+        return [[float(v) for v in t.split()]
+                for t in re.findall(r"\(([^()]*)\)", body)]
+    return [[float(v)] for v in body.split()]
+
+
+# * * * * * * * * * * * * * * * * Statistics * * * * * * * * * * * * * * * * #
+
+def percentile(values, q):
+    """The q-th percentile, linear between order statistics (numpy's
+    default); nan for no values."""
+    if len(values) == 0:
+        return float("nan")
+    return float(np.percentile(np.asarray(values, dtype=float), q))
+
+
+def mean_and_error(series, block):
+    """Mean, standard deviation and the standard error of the mean of a
+    [(t, value)] series, the error from the means of consecutive blocks of
+    the given duration (nan with fewer than two blocks)."""
+    t = np.array([s[0] for s in series], dtype=float)
+    v = np.array([s[1] for s in series], dtype=float)
+    mean, std = float(v.mean()), float(v.std())
+    dt = (t[-1] - t[0])/max(len(v) - 1, 1)
+    size = max(1, int(round(block/dt)))
+    nBlocks = len(v)//size
+    if nBlocks < 2:
+        return mean, std, float("nan")
+    means = v[:nBlocks*size].reshape(nBlocks, size).mean(axis=1)
+    spread = math.sqrt(((means - mean)**2).sum()/(nBlocks - 1))
+    return mean, std, spread/math.sqrt(nBlocks)
+
+
+def interpolate(xs, ys, x):
+    """ys at x, linear in xs (ascending); None outside [xs[0], xs[-1]]."""
+    if x < xs[0] or x > xs[-1]:
+        return None
+    return float(np.interp(x, xs, ys))
+
+
+# * * * * * * * * * * * * * A bed's momentum budget * * * * * * * * * * * * * #
+
+def packing_force(rows, mass=None, g=9.81):
+    """The packing step's mean upward force over the cloud's weight: the
+    vertical momentum it added (packingMonitor, every step) over the
+    window's duration, over M g (M: the given mass, else the last row's)."""
+    if len(rows) < 2:
+        return float("nan")
+    duration = rows[-1][0] - rows[0][0] + (rows[1][0] - rows[0][0])
+    if mass is None:
+        mass = rows[-1][MONITOR_MASS]
+    return sum(r[MONITOR_PACKING_Y] for r in rows)/duration/(mass*g)
+
+
+def cloud_momentum(case, time, cloud="kinematicCloud"):
+    """The cloud's vertical momentum written at a time folder, kg m/s
+    (None if the folder holds no cloud)."""
+    d = os.path.join(case, time, "lagrangian", cloud)
+    if not os.path.isdir(d):
+        return None
+    fields = [lagrangian_field(os.path.join(d, f))
+              for f in ("nParticle", "rho", "d", "U")]
+    return sum(n[0]*rho[0]*math.pi/6*dia[0]**3*u[1]
+               for n, rho, dia, u in zip(*fields))
+
+
+def weight_rest(case, t0, t1, carried, mass, g=9.81):
+    """What the gas and the packing step do not carry, over the weight:
+    d(P_y)/dt/(M g) + 1 - carried, with P_y the cloud's vertical momentum
+    at the written times nearest t0 and t1 and carried the gas's and the
+    packing step's shares together. Without wall friction it is the walls'
+    rebounds (a distributor's). None without two written clouds."""
+    times = [name for _, name in time_dirs(case)]
+    if not times:
+        return None
+    a = min(times, key=lambda d: abs(float(d) - t0))
+    b = min(times, key=lambda d: abs(float(d) - t1))
+    if a == b:
+        return None
+    pa, pb = cloud_momentum(case, a), cloud_momentum(case, b)
+    if pa is None or pb is None:
+        return None
+    return (pb - pa)/(float(b) - float(a))/(mass*g) + 1 - carried
