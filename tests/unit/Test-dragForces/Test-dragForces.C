@@ -17,7 +17,7 @@ Description
         dilute (0.995, 0.5), intermediate (0.7, 2), dense (0.45, 5)
         (StokesDrag also: its slip of eq 7 balances the buoyant weight)
         and, for the other Hill-Koch-Ladd branches, (0.995, 0.02) and
-        (0.7, 0.3). With the OpenFOAM convention of DenseDragForce
+        (0.7, 0.3). With the OpenFOAM convention of CorrelationDragForce
         (no separate pressure-gradient force on the parcels),
         Sp = V_p*beta/(alpha_s*alpha_g) for the voidage laws.
 
@@ -144,7 +144,7 @@ scalar handSyamlalOBrien(const scalar ag, const scalar w)
 }
 
 // Stokes drag 3*pi*mu*d*w on a sphere, with Wen-Yu's voidage factor on
-// beta (ag^-2.65) and the 1/ag of DenseDragForce
+// beta (ag^-2.65) and the 1/ag of CorrelationDragForce
 scalar handStokes(const scalar ag, const scalar w)
 {
     return 3*piValue*mug*d*std::pow(ag, -3.65);

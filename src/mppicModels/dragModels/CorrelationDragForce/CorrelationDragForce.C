@@ -3,17 +3,23 @@
     This file is part of the mppicModels project, GPL-3.0-or-later.
 \*---------------------------------------------------------------------------*/
 
-#include "DenseDragForce.H"
+#include "CorrelationDragForce.H"
 
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-template<class CloudType>
-const Foam::volScalarField& Foam::DenseDragForce<CloudType>::lookupAlphac
+template<class CloudType, class Law>
+const Foam::volScalarField*
+Foam::CorrelationDragForce<CloudType, Law>::lookupAlphac
 (
     const fvMesh& mesh,
     const dictionary& coeffs
 )
 {
+    if (!Law::gasFraction)
+    {
+        return nullptr;
+    }
+
     const word name(coeffs.getWord("alphac"));
 
     if (!mesh.foundObject<volScalarField>(name))
@@ -24,41 +30,42 @@ const Foam::volScalarField& Foam::DenseDragForce<CloudType>::lookupAlphac
             << mesh.sortedNames<volScalarField>() << exit(FatalIOError);
     }
 
-    return mesh.lookupObject<volScalarField>(name);
+    return &mesh.lookupObject<volScalarField>(name);
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-template<class CloudType>
-Foam::DenseDragForce<CloudType>::DenseDragForce
+template<class CloudType, class Law>
+Foam::CorrelationDragForce<CloudType, Law>::CorrelationDragForce
 (
     CloudType& owner,
     const fvMesh& mesh,
-    const dictionary& dict,
-    const word& forceType
+    const dictionary& dict
 )
 :
-    MppicDragForce<CloudType>(owner, mesh, dict, forceType),
-    alphac_(lookupAlphac(mesh, this->coeffs()))
+    MppicDragForce<CloudType>(owner, mesh, dict, typeName),
+    law_(this->coeffs()),
+    alphacPtr_(lookupAlphac(mesh, this->coeffs()))
 {}
 
 
-template<class CloudType>
-Foam::DenseDragForce<CloudType>::DenseDragForce
+template<class CloudType, class Law>
+Foam::CorrelationDragForce<CloudType, Law>::CorrelationDragForce
 (
-    const DenseDragForce<CloudType>& df
+    const CorrelationDragForce<CloudType, Law>& df
 )
 :
     MppicDragForce<CloudType>(df),
-    alphac_(df.alphac_)
+    law_(df.law_),
+    alphacPtr_(df.alphacPtr_)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-template<class CloudType>
-Foam::scalar Foam::DenseDragForce<CloudType>::Sp
+template<class CloudType, class Law>
+Foam::scalar Foam::CorrelationDragForce<CloudType, Law>::Sp
 (
     const typename CloudType::parcelType& p,
     const typename CloudType::parcelType::trackingData& td,
@@ -66,11 +73,16 @@ Foam::scalar Foam::DenseDragForce<CloudType>::Sp
     const scalar muc
 ) const
 {
-    const scalar alphag = alphac(p);
+    dragLaws::dragState s;
+    s.mass = mass;
+    s.rhop = p.rho();
+    s.alphag = alphacPtr_ ? (*alphacPtr_)[p.cell()] : 1;
+    s.slip = this->slip(p, td);
+    s.d = p.d();
+    s.rhog = td.rhoc();
+    s.mug = muc;
 
-    return
-        mass*K(alphag, this->slip(p, td), p.d(), td.rhoc(), muc)
-       /(p.rho()*alphag);
+    return law_.Sp(s);
 }
 
 
