@@ -41,6 +41,21 @@ const scalar mug = 1.8e-5;
 const scalar w = 0.5;
 
 
+//- The state of a parcel of this gas at a gas fraction and slip
+dragCorrelations::dragState state(const scalar ag, const scalar slip)
+{
+    dragCorrelations::dragState s;
+    s.mass = 0;
+    s.rhop = 0;
+    s.alphag = ag;
+    s.slip = slip;
+    s.d = d;
+    s.rhog = rhog;
+    s.mug = mug;
+    return s;
+}
+
+
 scalar handWenYu(const scalar ag, const scalar slip)
 {
     const scalar Re = ag*rhog*slip*d/mug;
@@ -66,13 +81,13 @@ int main(int argc, char *argv[])
         checkClose
         (
             "Wen-Yu K" + at,
-            dragCorrelations::wenYuK(ag, w, d, rhog, mug),
+            dragCorrelations::wenYuK(state(ag, w)),
             handWenYu(ag, w)
         );
         checkClose
         (
             "Ergun K" + at,
-            dragCorrelations::ergunK(ag, w, d, rhog, mug),
+            dragCorrelations::ergunK(state(ag, w)),
             handErgun(ag)
         );
     }
@@ -80,7 +95,7 @@ int main(int argc, char *argv[])
     checkClose
     (
         "Wen-Yu K above Re = 1000 (Cd = 0.44)",
-        dragCorrelations::wenYuK(0.9, 200, d, rhog, mug),
+        dragCorrelations::wenYuK(state(0.9, 200)),
         handWenYu(0.9, 200)
     );
     checkClose
@@ -98,7 +113,7 @@ int main(int argc, char *argv[])
     checkClose
     (
         "constant Cd = 1: K = 0.75*1.2*0.5/1e-4",
-        dragCorrelations::constantCdK(1, w, d, rhog),
+        dragCorrelations::constantCdK(state(1, w), 1),
         4500
     );
 
@@ -106,19 +121,19 @@ int main(int argc, char *argv[])
     checkClose
     (
         "Hill-Koch-Ladd K at ag = 1, zero slip: Stokes 18*mu/d^2",
-        dragCorrelations::hillKochLaddK(1, 0, d, rhog, mug),
+        dragCorrelations::hillKochLaddK(state(1, 0)),
         stokesK
     );
     checkClose
     (
         "BVK K at ag = 1, zero slip: Stokes 18*mu/d^2",
-        dragCorrelations::bvkK(1, 0, d, rhog, mug),
+        dragCorrelations::bvkK(state(1, 0)),
         stokesK
     );
     checkClose
     (
         "Syamlal-O'Brien K at ag = 1, zero slip: 0.75*4.8^2*mu/d^2",
-        dragCorrelations::syamlalOBrienK(1, 0, d, rhog, mug, 0.8, 2.65),
+        dragCorrelations::syamlalOBrienK(state(1, 0), 0.8, 2.65),
         17.28*mug/(d*d)
     );
     checkClose
@@ -155,8 +170,8 @@ int main(int argc, char *argv[])
     {
         const scalar phi = dragCorrelations::gidaspowBlendWeight(ag, 0.8);
         return
-            (1 - phi)*dragCorrelations::ergunK(ag, w, d, rhog, mug)
-          + phi*dragCorrelations::wenYuK(ag, w, d, rhog, mug);
+            (1 - phi)*dragCorrelations::ergunK(state(ag, w))
+          + phi*dragCorrelations::wenYuK(state(ag, w));
     };
     const scalar jump = mag(blended(0.8 + 1e-9) - blended(0.8 - 1e-9));
     checkTrue

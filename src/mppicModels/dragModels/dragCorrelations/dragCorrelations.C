@@ -19,35 +19,23 @@ Foam::scalar Foam::dragCorrelations::wenYuCd(const scalar Re)
 }
 
 
-Foam::scalar Foam::dragCorrelations::wenYuK
-(
-    const scalar alphag,
-    const scalar slip,
-    const scalar d,
-    const scalar rhog,
-    const scalar mug
-)
+Foam::scalar Foam::dragCorrelations::wenYuK(const dragState& s)
 {
-    const scalar Re = alphag*rhog*slip*d/mug;
+    const scalar Re = s.alphag*s.rhog*s.slip*s.d/s.mug;
 
     // 0.75*Cd*ag*rhog*w/d written with Cd*Re, finite as w -> 0
     const scalar CdRe =
         Re >= 1000 ? 0.44*Re : 24*(1 + 0.15*pow(Re, 0.687));
 
-    return 0.75*CdRe*mug/sqr(d)*pow(alphag, -2.65);
+    return 0.75*CdRe*s.mug/sqr(s.d)*pow(s.alphag, -2.65);
 }
 
 
-Foam::scalar Foam::dragCorrelations::ergunK
-(
-    const scalar alphag,
-    const scalar slip,
-    const scalar d,
-    const scalar rhog,
-    const scalar mug
-)
+Foam::scalar Foam::dragCorrelations::ergunK(const dragState& s)
 {
-    return 150*(1 - alphag)*mug/(alphag*sqr(d)) + 1.75*rhog*slip/d;
+    return
+        150*(1 - s.alphag)*s.mug/(s.alphag*sqr(s.d))
+      + 1.75*s.rhog*s.slip/s.d;
 }
 
 
@@ -138,19 +126,13 @@ Foam::scalar Foam::dragCorrelations::hillKochLaddF
 }
 
 
-Foam::scalar Foam::dragCorrelations::hillKochLaddK
-(
-    const scalar alphag,
-    const scalar slip,
-    const scalar d,
-    const scalar rhog,
-    const scalar mug
-)
+Foam::scalar Foam::dragCorrelations::hillKochLaddK(const dragState& s)
 {
-    const scalar ReRadius = 0.5*alphag*rhog*slip*d/mug;
+    const scalar ReRadius = 0.5*s.alphag*s.rhog*s.slip*s.d/s.mug;
 
     return
-        18*mug*sqr(alphag)/sqr(d)*hillKochLaddF(1 - alphag, ReRadius);
+        18*s.mug*sqr(s.alphag)/sqr(s.d)
+       *hillKochLaddF(1 - s.alphag, ReRadius);
 }
 
 
@@ -174,36 +156,26 @@ Foam::scalar Foam::dragCorrelations::bvkF(const scalar phi, const scalar Re)
 }
 
 
-Foam::scalar Foam::dragCorrelations::bvkK
-(
-    const scalar alphag,
-    const scalar slip,
-    const scalar d,
-    const scalar rhog,
-    const scalar mug
-)
+Foam::scalar Foam::dragCorrelations::bvkK(const dragState& s)
 {
-    const scalar Re = alphag*rhog*slip*d/mug;
+    const scalar Re = s.alphag*s.rhog*s.slip*s.d/s.mug;
 
-    return 18*mug*alphag/sqr(d)*bvkF(1 - alphag, Re);
+    return 18*s.mug*s.alphag/sqr(s.d)*bvkF(1 - s.alphag, Re);
 }
 
 
 Foam::scalar Foam::dragCorrelations::syamlalOBrienK
 (
-    const scalar alphag,
-    const scalar slip,
-    const scalar d,
-    const scalar rhog,
-    const scalar mug,
+    const dragState& s,
     const scalar c1,
     const scalar d1
 )
 {
-    const scalar ReSingle = rhog*slip*d/mug;
+    const scalar ReSingle = s.rhog*s.slip*s.d/s.mug;
 
-    const scalar A = pow(alphag, 4.14);
-    const scalar B = alphag <= 0.85 ? c1*pow(alphag, 1.28) : pow(alphag, d1);
+    const scalar A = pow(s.alphag, 4.14);
+    const scalar B =
+        s.alphag <= 0.85 ? c1*pow(s.alphag, 1.28) : pow(s.alphag, d1);
 
     // Ratio of the terminal velocity of the suspension to a single sphere's
     const scalar Vr =
@@ -215,31 +187,27 @@ Foam::scalar Foam::dragCorrelations::syamlalOBrienK
 
     // Dalla Valle's Cd*Re at Re_s/V_r is (0.63*sqrt(Re_s/V_r) + 4.8)^2
     return
-        0.75*mug*alphag/(Vr*sqr(d))*sqr(0.63*sqrt(ReSingle/Vr) + 4.8);
+        0.75*s.mug*s.alphag/(Vr*sqr(s.d))*sqr(0.63*sqrt(ReSingle/Vr) + 4.8);
 }
 
 
 Foam::scalar Foam::dragCorrelations::stokesK
 (
-    const scalar alphag,
-    const scalar d,
-    const scalar mug,
+    const dragState& s,
     const scalar voidageExponent
 )
 {
-    return 18*mug/sqr(d)*pow(alphag, -voidageExponent);
+    return 18*s.mug/sqr(s.d)*pow(s.alphag, -voidageExponent);
 }
 
 
 Foam::scalar Foam::dragCorrelations::constantCdK
 (
-    const scalar Cd,
-    const scalar slip,
-    const scalar d,
-    const scalar rhog
+    const dragState& s,
+    const scalar Cd
 )
 {
-    return 0.75*Cd*rhog*slip/d;
+    return 0.75*Cd*s.rhog*s.slip/s.d;
 }
 
 

@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dragLaws.H"
-#include "dragCorrelations.H"
 #include "boundedCoefficient.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -95,15 +94,11 @@ Foam::scalar Foam::dragLaws::GidaspowDrag::Sp(const dragState& s) const
     scalar K = 0;
     if (phi > 0)
     {
-        K +=
-            phi
-           *dragCorrelations::wenYuK(s.alphag, s.slip, s.d, s.rhog, s.mug);
+        K += phi*dragCorrelations::wenYuK(s);
     }
     if (phi < 1)
     {
-        K +=
-            (1 - phi)
-           *dragCorrelations::ergunK(s.alphag, s.slip, s.d, s.rhog, s.mug);
+        K += (1 - phi)*dragCorrelations::ergunK(s);
     }
     return voidageSp(s, K);
 }
@@ -111,51 +106,31 @@ Foam::scalar Foam::dragLaws::GidaspowDrag::Sp(const dragState& s) const
 
 Foam::scalar Foam::dragLaws::HillKochLaddDrag::Sp(const dragState& s) const
 {
-    return voidageSp
-    (
-        s,
-        dragCorrelations::hillKochLaddK(s.alphag, s.slip, s.d, s.rhog, s.mug)
-    );
+    return voidageSp(s, dragCorrelations::hillKochLaddK(s));
 }
 
 
 Foam::scalar Foam::dragLaws::BVKDrag::Sp(const dragState& s) const
 {
-    return voidageSp
-    (
-        s,
-        dragCorrelations::bvkK(s.alphag, s.slip, s.d, s.rhog, s.mug)
-    );
+    return voidageSp(s, dragCorrelations::bvkK(s));
 }
 
 
 Foam::scalar Foam::dragLaws::SyamlalOBrienDrag::Sp(const dragState& s) const
 {
-    return voidageSp
-    (
-        s,
-        dragCorrelations::syamlalOBrienK
-        (
-            s.alphag, s.slip, s.d, s.rhog, s.mug, c1_, d1_
-        )
-    );
+    return voidageSp(s, dragCorrelations::syamlalOBrienK(s, c1_, d1_));
 }
 
 
 Foam::scalar Foam::dragLaws::StokesDrag::Sp(const dragState& s) const
 {
-    return voidageSp
-    (
-        s,
-        dragCorrelations::stokesK(s.alphag, s.d, s.mug, voidageExponent_)
-    );
+    return voidageSp(s, dragCorrelations::stokesK(s, voidageExponent_));
 }
 
 
 Foam::scalar Foam::dragLaws::ConstantCdDrag::Sp(const dragState& s) const
 {
-    return
-        s.mass*dragCorrelations::constantCdK(Cd_, s.slip, s.d, s.rhog)/s.rhop;
+    return s.mass*dragCorrelations::constantCdK(s, Cd_)/s.rhop;
 }
 
 
