@@ -5,6 +5,9 @@ Reads OpenFOAM output directly (lagrangian fields, postProcessing tables,
 logs) and compares with hand-derived references or between runs. Each
 check prints one line per comparison and the script exits 1 on any failure.
 
+A test script's own Python imports it for the same lines (report, close)
+and its exit status (status()): one pass/fail helper for every test.
+
 Usage:
     checks.py parity <caseA> <caseB> <time> <t0> <t1> <relTol>
     checks.py serialParallel <serialCase> <parallelCase> <time>
@@ -25,10 +28,24 @@ failures = 0
 
 
 def report(ok, what):
+    """One PASS or FAIL line; a failure counts towards status()."""
     global failures
     print(("PASS " if ok else "FAIL ") + what)
     if not ok:
         failures += 1
+
+
+def close(value, reference, rel_tol, what):
+    """|value - reference| <= rel_tol*|reference|, reported with both."""
+    ok = abs(value - reference) <= rel_tol*abs(reference)
+    report(ok, "%s: %.6g against %.6g (relative tolerance %g)"
+           % (what, value, reference, rel_tol))
+    return ok
+
+
+def status():
+    """Exit status of a test script: 1 if any check failed, else 0."""
+    return 1 if failures else 0
 
 
 def read_list(path):
@@ -276,7 +293,7 @@ def main(argv):
      "cloudMass": cloud_mass, "fatal": fatal,
      "subCycles": sub_cycles, "subCyclesCFL": sub_cycles_cfl,
      "balance": balance, "sameState": same_state, "differs": differs}[cmd](*args)
-    return 1 if failures else 0
+    return status()
 
 
 if __name__ == "__main__":

@@ -103,14 +103,14 @@ cd "$case" || exit 1
 import glob, math, os, re, sys
 sys.path.insert(0, ".")
 import cfbResults as c
+import os
+import sys
 sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 from checks import read_list
 
-failures = 0
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 
 rho, d = 860.0, 8.7e-4
 vp1 = math.pi/6*d**3
@@ -184,5 +184,5 @@ r = c.summary(".", 0.05)
 check(all(math.isfinite(r[k]) for k in ("riserDp", "standpipeDp", "packedHeight")),
       "results: riser dP %.1f Pa, standpipe dP %.1f Pa, packed height %.3f m"
       % (r["riserDp"], r["standpipeDp"], r["packedHeight"]))
-sys.exit(1 if failures else 0)
+sys.exit(checks.status())
 PY

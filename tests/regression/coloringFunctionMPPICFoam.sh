@@ -23,14 +23,14 @@ import sys
 rows = [l.split() for l in open(sys.argv[1] +
         "/postProcessing/packingMonitor/0/packingMonitor.dat")
         if l.strip() and not l.startswith("#")]
-fails = 0
-def check(ok, what):
-    global fails
-    print(("PASS " if ok else "FAIL ") + what)
-    fails += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 check(len(rows) == 250, "250 monitor rows (%d)" % len(rows))
 check(all(int(r[1]) == 2400 for r in rows), "2400 parcels in every row")
 mass = float(rows[-1][2])
 check(abs(mass/0.0140625 - 1) < 1e-9, "cloud mass %.10g kg = 0.0140625 kg" % mass)
-sys.exit(1 if fails else 0)
+sys.exit(checks.status())
 PY

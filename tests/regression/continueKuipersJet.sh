@@ -23,11 +23,11 @@ runAllrun "$runDir/case" 0.02 -continue || exit 1
 cd "$runDir/case" || exit 1
 /usr/bin/python3 - <<'PY'
 import re, sys
-failures = 0
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 log = open("log.mppicPimpleFoam").read()
 starts = re.findall(r"Starting time loop", log)
 steps = re.findall(r"^Time = ([0-9.e-]+)\s*$.*?Cloud: parcels = (\d+), max solids fraction = ([0-9.e+-]+)",
@@ -45,5 +45,5 @@ mass = 0.6*0.57*0.5*0.015*2660
 masses = [float(m) for m in re.findall(r"Current mass in system\s*=\s*([0-9.e+-]+)", log)]
 check(len(masses) >= 40 and all(abs(m/mass - 1) < 1e-9 for m in masses),
       "cloud mass %.6g kg = %.6g kg at every step" % (masses[-1] if masses else -1, mass))
-sys.exit(1 if failures else 0)
+sys.exit(checks.status())
 PY

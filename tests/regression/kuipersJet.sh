@@ -32,11 +32,11 @@ import sys
 sys.path.insert(0, ".")
 import kuipersJetResults as k
 res = k.summary(".", 0.1)
-failures = 0
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 mon = res["monitor"]
 check(all(r[1] == 38000 for r in mon), "38000 parcels at every step")
 mass = 0.6*0.57*0.5*0.015*2660
@@ -68,5 +68,5 @@ check(s.slab_rows(grid(60, 62, 30, 39)) == (60, 30), "slab 62/76 over void 39/76
 check(s.slab_rows(grid(60, 60, 30, 39)) is None, "no slab at 60/76 dense")
 check(s.slab_rows(grid(60, 62, 30, 38)) is None, "no slab over a void of 38/76")
 check(s.slab_rows(grid(30, 62, 60, 39)) is None, "no slab under a void")
-sys.exit(1 if failures else 0)
+sys.exit(checks.status())
 PY

@@ -29,11 +29,11 @@ cd "$runDir/case" || exit 1
 import sys
 sys.path.insert(0, ".")
 import minimumFluidizationResults as m
-failures = 0
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 mu, rho_g, rho_p, d, eps, g = 1.8e-5, 1.0, 860.0, 8.7e-4, 0.38, 9.81
 def ergun(U):
     grad = (150*mu*(1 - eps)**2*U/(eps**3*d**2)
@@ -51,5 +51,5 @@ for U, expected in ((0.06, 0.3023), (0.12, 0.6359)):
     check(abs(mean/expected - 1) <= 0.10,
           "dP* at %.2f m/s %.4f within 10 %% of Ergun %.4f (%d steps)"
           % (U, mean, expected, len(near)))
-sys.exit(1 if failures else 0)
+sys.exit(checks.status())
 PY

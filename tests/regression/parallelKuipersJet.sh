@@ -27,11 +27,11 @@ grep -l -E 'FOAM FATAL|FOAM aborting' "$case"/log.* && exit 1
 cd "$case" || exit 1
 /usr/bin/python3 - <<'PY'
 import re, sys
-failures = 0
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 log = open("log.mppicPimpleFoam").read()
 check(re.search(r"^nProcs\s*:\s*3\s*$", log, re.M) is not None, "3 processes")
 steps = [(int(n), float(a)) for n, a in re.findall(
@@ -45,5 +45,5 @@ mass = 0.6*0.57*0.5*0.015*2660
 masses = [float(m) for m in re.findall(r"Current mass in system\s*=\s*(\S+)", log)]
 check(len(masses) >= 100 and all(abs(m/mass - 1) < 1e-9 for m in masses),
       "cloud mass %.6g kg = %.6g kg at every step" % (masses[-1] if masses else -1, mass))
-sys.exit(1 if failures else 0)
+sys.exit(checks.status())
 PY

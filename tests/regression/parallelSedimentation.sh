@@ -40,11 +40,12 @@ sys.path.insert(0, ".")
 from sedimentationResults import read_monitor, bed_profile, latest_time, \
     surface_height, seeded_solids_volume
 n, end = sys.argv[1], float(sys.argv[2])
-failures = 0
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
 def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + "%s ranks: " % n + what)
-    failures += not ok
+    checks.report(ok, "%s ranks: " % n + what)
 steps = [(int(m.group(1)), float(m.group(2))) for m in re.finditer(
     r"^Cloud: parcels = (\d+), max solids fraction = (\S+)$",
     open("log.mppicPimpleFoam").read(), re.M)]
@@ -61,7 +62,7 @@ if end >= 1:
     ys, prof, dy, _, _ = bed_profile(".", latest_time("."))
     h = surface_height(ys, prof, 0.5*cp, dy)
     check(abs(h/0.0375 - 1) <= 0.03, "bed height %.4f m within 3 %% of 0.0375 m" % h)
-sys.exit(1 if failures else 0)
+sys.exit(checks.status())
 PY
 done
 exit $status

@@ -34,11 +34,11 @@ import re
 import sys
 sys.path.insert(0, ".")
 import rayleighTaylorResults as rt
-failures = 0
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 res = rt.summary(".")
 A_hand = (1.8 - 1)/(1.8 + 1)
 check(abs(res["A"] - A_hand) < 1e-12 and abs(A_hand - 0.285714) < 1e-6,
@@ -62,5 +62,5 @@ text = open("log.mppicPimpleFoam").read()
 counts = re.findall(r"Current number of parcels\s*=\s*(\d+)", text)
 check(bool(counts) and int(counts[-1]) == 9600,
       "9600 parcels at the end (%s)" % (counts[-1] if counts else "none"))
-sys.exit(1 if failures else 0)
+sys.exit(checks.status())
 PY

@@ -54,11 +54,11 @@ done
 cd "$runDir" || exit 1
 /usr/bin/python3 - <<'PY'
 import re, subprocess, sys
-failures = 0
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 
 NUMBER = r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?"
 
@@ -99,5 +99,5 @@ for name in ("kinematicCloud:UMean", "alpha.air"):
     check(d <= 1e-12, "%s: restarted = whole (largest difference %.3g relative)" % (name, d))
 d = difference(cloud("whole", "U"), cloud("noMean", "U"))
 check(d > 1e-6, "without the stored mean the parcels differ (%.3g relative): the check can fail" % d)
-sys.exit(1 if failures else 0)
+sys.exit(checks.status())
 PY

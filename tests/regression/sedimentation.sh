@@ -29,11 +29,11 @@ sys.path.insert(0, ".")
 from sedimentationResults import read_monitor, bed_profile, latest_time, \
     surface_height, seeded_solids_volume
 cp, rows = read_monitor(".")
-failures = 0
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 min_gas = min(r[6] for r in rows)
 check(min_gas >= 0, "gas fraction never below 0 (min %.4f)" % min_gas)
 ys, prof, dy, _, _ = bed_profile(".", latest_time("."))
@@ -48,6 +48,6 @@ bound = max(1.03*cp, cp + one_parcel)
 check(abs(one_parcel - 0.01875) < 1e-9, "one parcel = %.6f of a cell" % one_parcel)
 check(max_avg <= bound, "max solids fraction %.6f <= max(1.03*alpha_cp, "
       "alpha_cp + one parcel) = %.6f at every step" % (max_avg, bound))
-sys.exit(1 if failures else 0)
+sys.exit(checks.status())
 PY
 exit $status

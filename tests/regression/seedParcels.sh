@@ -71,11 +71,11 @@ pts = [tuple(map(float, t)) for t in
        re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
 seeded = open(case + "/constant/seededParcels").read()
 nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
-fails = 0
-def check(ok, what):
-    global fails
-    print(("PASS " if ok else "FAIL ") + what)
-    fails += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 counts = {}
 for x, y, z in pts:
     key = (min(int(x/0.25), 3), min(int(y/0.25), 3))
@@ -100,7 +100,7 @@ check(len(pts) == n, "%d parcels (%d)" % (n, len(pts)))
 expected = 0.3*0.1/(n*math.pi/6*1e-6)
 check(abs(nParticle/expected - 1) < 1e-12,
       "nParticle %.15g = 0.3*0.1/(%d*pi/6*1e-6) = %.15g" % (nParticle, n, expected))
-sys.exit(1 if fails else 0)
+sys.exit(checks.status())
 PY
 }
 
@@ -137,17 +137,17 @@ n = len(re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text))
 seeded = open(case + "/constant/seededParcels").read()
 nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
 expected = 0.3*0.1/(56*math.pi/6*1e-6)
-fails = 0
-def check(ok, what):
-    global fails
-    print(("PASS " if ok else "FAIL ") + what)
-    fails += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 check(n == 56, "statisticalWeight 1000: 56 parcels (%d)" % n)
 check(abs(nParticle/expected - 1) < 1e-12,
       "nParticle %.15g = 0.3*0.1/(56*pi/6*1e-6) = %.15g" % (nParticle, expected))
 check(abs(nParticle/1000 - 1) < 0.025,
       "nParticle within 2.5 % of the statistical weight 1000")
-sys.exit(1 if fails else 0)
+sys.exit(checks.status())
 PY
 for bad in "statisticalWeight 0.5;:statisticalWeight:[1, inf)" \
            "statisticalWeight 1000; arrangement cell;:statisticalWeight:arrangement lattice" \
@@ -185,11 +185,11 @@ pts = [tuple(map(float, t)) for t in
        re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
 seeded = open(case + "/constant/seededParcels").read()
 nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
-fails = 0
-def check(ok, what):
-    global fails
-    print(("PASS " if ok else "FAIL ") + what)
-    fails += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 cells = {}
 for x, y, z in pts:
     key = (bisect.bisect_right(edges, x) - 1, int(y/0.25))
@@ -205,7 +205,7 @@ expected = 0.3*0.1/(n*math.pi/6*1e-6)
 check(abs(nParticle/expected - 1) < 1e-12,
       "%s: nParticle %.15g = 0.3*0.1/(%d*pi/6*1e-6) = %.15g"
       % (label, nParticle, n, expected))
-sys.exit(1 if fails else 0)
+sys.exit(checks.status())
 PY
 }
 writeDict box 0.3 10 0.5 "(0 0 0) (1 1 0.1)" volume

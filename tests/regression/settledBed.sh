@@ -49,11 +49,11 @@ tau = rho_p*(1 - eps)/beta
 f = 1 - tau/dt*(1 - math.exp(-dt/tau))
 print("u_slip %.5f m/s, tau %.3e s, f %.4f" % (u_slip, tau, f))
 
-failures = 0
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 
 text = open("1/lagrangian/kinematicCloud/U").read()
 uy = [float(m.group(2)) for m in re.finditer(
@@ -75,5 +75,5 @@ ratio = sum(ratios)/len(ratios)
 check(0.5*f <= ratio <= f + 0.05,
       "deltaP/weight %.4f over 0.9-1.0 s in [0.5 f, f + 0.05] = [%.4f, %.4f]"
       % (ratio, 0.5*f, f + 0.05))
-sys.exit(1 if failures else 0)
+sys.exit(checks.status())
 PY

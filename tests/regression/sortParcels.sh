@@ -60,6 +60,8 @@ check sameState "$runDir/every0" "$runDir/every1" 0.0015 1e-9 \
 /usr/bin/python3 - "$runDir/every0/0.0015" "$runDir/every1/0.0015" <<'PY' || status=1
 import os, sys
 import numpy as np
+import os
+import sys
 sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import read_rows, report
@@ -88,6 +90,6 @@ report(out_of_order(c1) < 0.01, "sorted list in cell order: %.4f of neighbouring
        " pairs out of order (< 0.01)" % out_of_order(c1))
 report(out_of_order(c0) > 0.30, "unsorted (shuffled) list: %.4f of neighbouring"
        " pairs out of order (> 0.30)" % out_of_order(c0))
-sys.exit(1 if checks.failures else 0)
+sys.exit(checks.status())
 PY
 exit $status

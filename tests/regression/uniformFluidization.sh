@@ -25,11 +25,11 @@ cd "$runDir/case" || exit 1
 import sys
 sys.path.insert(0, ".")
 import uniformFluidizationResults as u
-failures = 0
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 weight = 0.1*0.12*0.01*0.6*2500*9.81/0.001
 rows = u.post.read_table("postProcessing/bedPressureDrop/0/bedPressureDrop.dat")
 check(all(abs(r[5]/weight - 1) < 1e-9 for r in rows),
@@ -44,5 +44,5 @@ bound = max(1.05*0.6, 0.6 + 0.6/8)
 check(max(r[4] for r in mon) <= bound + 1e-12,
       "max cell solids fraction %.4f <= %.4f at every step"
       % (max(r[4] for r in mon), bound))
-sys.exit(1 if failures else 0)
+sys.exit(checks.status())
 PY

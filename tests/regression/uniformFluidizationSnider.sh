@@ -41,11 +41,11 @@ cd "$runDir/case" || exit 1
 import sys
 sys.path.insert(0, ".")
 import uniformFluidizationResults as u
-failures = 0
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
+import os
+import sys
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
+import checks
+from checks import report as check
 res = u.summary(".", 1.2)
 check(0.90 <= res["ratio"] <= 1.10,
       "(deltaP - gas head)/weight over 1.2-2 s %.4f in [0.90, 1.10]"
@@ -58,5 +58,5 @@ check(largest <= 0.6375*(1 + 1e-9),
       "max cell solids fraction at every step %.4f <= 0.6375" % largest)
 hat = max(r[3] for r in mon)
 check(hat <= 0.69, "max linear-hat solids fraction at every step %.4f <= 0.69" % hat)
-sys.exit(1 if failures else 0)
+sys.exit(checks.status())
 PY

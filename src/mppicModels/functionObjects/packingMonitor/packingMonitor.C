@@ -30,41 +30,47 @@ Foam::scalar Foam::functionObjects::packingMonitor::readClosePackFraction
     const dictionary& dict
 ) const
 {
-    const mppicCoefficients::interval range =
-        mppicCoefficients::bounds::open(0, 1);
-
     if (dict.found("closePackFraction"))
-    {
-        return mppicCoefficients::read(dict, "closePackFraction", range);
-    }
-
-    // From the cloud's packing model
-    const dictionary& subModels =
-        cloudProperties().subDict("subModels");
-
-    const word model(subModels.get<word>("packingModel"));
-    const dictionary& coeffs = subModels.subOrEmptyDict(model + "Coeffs");
-
-    if (coeffs.found("closePackFraction"))
-    {
-        return mppicCoefficients::read(coeffs, "closePackFraction", range);
-    }
-    if (coeffs.isDict("particleStressModel"))
     {
         return
             mppicCoefficients::read
             (
-                coeffs.subDict("particleStressModel"), "alphaPacked", range
+                dict, "closePackFraction", mppicCoefficients::bounds::open(0, 1)
             );
     }
 
-    FatalIOErrorInFunction(dict)
-        << "Dictionary " << dict.name() << ": keyword closePackFraction"
-        << " is missing and packing model " << model << " of cloud "
-        << cloudName_ << " does not give one; allowed range " << range
-        << exit(FatalIOError);
+    // Our packing models say it; the stock ones keep it in their
+    // particle stress model, which they do not expose
+    const scalar fromModel =
+        cloudAs<basicKinematicMPPICCloud>()
+      ? closePackFractionOf(*cloudAs<basicKinematicMPPICCloud>())
+      : closePackFractionOf(*cloudAs<basicReactingMPPICCloud>());
 
-    return 0;
+    if (fromModel > 0)
+    {
+        return fromModel;
+    }
+
+    const dictionary& subModels = cloudProperties().subDict("subModels");
+    const word model(subModels.get<word>("packingModel"));
+    const dictionary& coeffs = subModels.subOrEmptyDict(model + "Coeffs");
+
+    if (!coeffs.isDict("particleStressModel"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": keyword closePackFraction"
+            << " is missing and packing model " << model << " of cloud "
+            << cloudName_ << " does not give one; allowed range (0, 1)"
+            << exit(FatalIOError);
+    }
+
+    return
+        mppicCoefficients::read
+        (
+            coeffs.subDict("particleStressModel"),
+            "alphaPacked",
+            mppicCoefficients::bounds::open(0, 1)
+        );
 }
 
 

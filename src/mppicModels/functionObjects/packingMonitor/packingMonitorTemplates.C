@@ -20,6 +20,34 @@ const CloudType* Foam::functionObjects::packingMonitor::cloudAs() const
 
 
 template<class CloudType>
+const Foam::PackingModels::MfixPackingModel
+<
+    typename CloudType::MPPICCloudType
+>*
+Foam::functionObjects::packingMonitor::ourPackingModel(const CloudType& cloud)
+{
+    return dynamic_cast
+    <
+        const PackingModels::MfixPackingModel
+        <
+            typename CloudType::MPPICCloudType
+        >*
+    >(&cloud.packingModel());
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::functionObjects::packingMonitor::closePackFractionOf
+(
+    const CloudType& cloud
+)
+{
+    const auto* ours = ourPackingModel(cloud);
+    return ours ? ours->closePackFraction() : 0;
+}
+
+
+template<class CloudType>
 Foam::scalar
 Foam::functionObjects::packingMonitor::maxAveragedSolidsFraction
 (
@@ -113,13 +141,7 @@ Foam::functionObjects::packingMonitor::evaluate(const CloudType& cloud) const
     // Our packing models record the velocity change they gave, which can
     // differ from UCorrect (a move back out of a full cell is a
     // displacement, not a velocity: ColoringFunction)
-    typedef PackingModels::MfixPackingModel
-    <
-        typename CloudType::MPPICCloudType
-    > mfixModel;
-
-    const mfixModel* ours =
-        dynamic_cast<const mfixModel*>(&cloud.packingModel());
+    const auto* ours = ourPackingModel(cloud);
 
     if (ours && ours->cellAddedMomentum().size() == mesh_.nCells())
     {
