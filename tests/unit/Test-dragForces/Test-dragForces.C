@@ -8,18 +8,11 @@ Description
     The drag laws of libmppicModels as the cloud uses them: each is
     selected by name through OpenFOAM's ParticleForce table, for a real
     basicKinematicMPPICCloud on the box of tests/unit/cases/box, and asked
-    for the implicit coefficient Sp [kg/s] of the drag on one parcel at
-    rest (F = Sp*(u_g - u_p)) in a uniform gas. The expected values are
-    written out below in the textbook form of each law (beta per unit
-    volume, or the dimensionless force on a sphere), not the library's:
-        one particle, d = 0.2 mm, rho_p = 2500, rho_g = 1.2, mu_g = 1.8e-5,
-        V_p = piValue*d^3/6;  points (alpha_g, slip w [m/s]):
-        dilute (0.995, 0.5), intermediate (0.7, 2), dense (0.45, 5)
-        (StokesDrag also: its slip of eq 7 balances the buoyant weight)
-        and, for the other Hill-Koch-Ladd branches, (0.995, 0.02) and
-        (0.7, 0.3). With the OpenFOAM convention of CorrelationDragForce
-        (no separate pressure-gradient force on the parcels),
-        Sp = V_p*beta/(alpha_s*alpha_g) for the voidage laws.
+    for Sp [kg/s] of one parcel at rest (F = Sp*(u_g - u_p)) in a uniform
+    gas, against handDragValues.H at the points (alpha_g, w [m/s]) dilute
+    (0.995, 0.5), intermediate (0.7, 2), dense (0.45, 5), the other
+    Hill-Koch-Ladd branches (0.995, 0.02), (0.7, 0.3), and StokesDrag's
+    eq 7 slip; Sp = V_p*beta/(alpha_s*alpha_g) for the voidage laws.
 
     Also: Gidaspow's blend is continuous at the switch, feedback false
     moves the drag to the explicit (non-coupled) part, slipFrom cellMean
@@ -43,130 +36,14 @@ using namespace Foam::unitTest;
 typedef basicKinematicMPPICCloud::kinematicCloudType cloudType;
 typedef cloudType::parcelType parcelType;
 
-const scalar piValue = constant::mathematical::pi;
-const scalar d = 2e-4;
-const scalar rhop = 2500;
-const scalar rhog = 1.2;
-const scalar mug = 1.8e-5;
-const scalar Vp = piValue*d*d*d/6;
+#include "handDragValues.H"
 
-
-// * * * * * * * * * * * * * * Hand formulas  * * * * * * * * * * * * * * * //
-
-// Gidaspow (1994): Ergun's and Wen-Yu's beta, per unit volume of mixture
-scalar ergunBeta(const scalar ag, const scalar w)
-{
-    const scalar as = 1 - ag;
-    return 150*as*as*mug/(ag*d*d) + 1.75*as*rhog*w/d;
-}
-
-scalar wenYuBeta(const scalar ag, const scalar w)
-{
-    const scalar Re = ag*rhog*w*d/mug;
-    const scalar Cd = Re < 1000 ? 24/Re*(1 + 0.15*std::pow(Re, 0.687)) : 0.44;
-    return 0.75*Cd*(1 - ag)*ag*rhog*w/d*std::pow(ag, -2.65);
-}
-
-scalar handGidaspow(const scalar ag, const scalar w, const bool blend)
-{
-    const scalar phi =
-        blend ? std::atan(150*1.75*(ag - 0.8))/piValue + 0.5 : (ag < 0.8 ? 0 : 1);
-    const scalar beta = (1 - phi)*ergunBeta(ag, w) + phi*wenYuBeta(ag, w);
-    return Vp*beta/((1 - ag)*ag);
-}
-
-// Hill-Koch-Ladd, Benyahia et al. (2006): drag on a sphere
-// 3*piValue*mu*d*U*F with U = ag*w the superficial slip, Re on the radius
-scalar handHillKochLadd(const scalar ag, const scalar w)
-{
-    const scalar phi = 1 - ag;
-    const scalar Re = ag*rhog*w*(d/2)/mug;
-    const scalar denseLimit = 10*phi/std::pow(1 - phi, 3);
-    const scalar wt = std::exp(-10*(0.4 - phi)/phi);
-    const scalar root = std::sqrt(phi/2);
-    const scalar logTerm = 135.0/64.0*phi*std::log(phi);
-
-    const scalar F0 = phi >= 0.4 ? denseLimit
-      : (1 - wt)*(1 + 3*root + logTerm + 17.14*phi)
-       /(1 + 0.681*phi - 8.48*phi*phi + 8.16*phi*phi*phi) + wt*denseLimit;
-    const scalar F2 = phi >= 0.4 ? denseLimit
-      : (1 - wt)*(1 + 3*root + logTerm + 17.89*phi)
-       /(1 + 0.681*phi - 11.03*phi*phi + 15.41*phi*phi*phi) + wt*denseLimit;
-    const scalar F1 =
-        phi <= 0.1 ? std::sqrt(2/phi)/40 : 0.11 + 0.00051*std::exp(11.6*phi);
-    const scalar F3 = phi < 0.0953
-      ? 0.9351*phi + 0.03667
-      : 0.0673 + 0.212*phi + 0.0232/std::pow(1 - phi, 5);
-
-    scalar F;
-    if (phi <= 0.01)
-    {
-        const scalar ReT1 = (F2 - 1)/(0.375 - F3);
-        F = Re <= ReT1 ? 1 + 0.375*Re : F2 + F3*Re;
-    }
-    else
-    {
-        const scalar ReT2 =
-            (F3 + std::sqrt(F3*F3 - 4*F1*(F0 - F2)))/(2*F1);
-        F = Re <= ReT2 ? F0 + F1*Re*Re : F2 + F3*Re;
-    }
-
-    // Sp = force/w
-    return 3*piValue*mug*d*ag*F;
-}
-
-// Beetstra, van der Hoef & Kuipers (2007): F = drag/(3*piValue*mu*d*ag*w)
-// times ag (their F is per superficial velocity of the fluid, over ag)
-scalar handBVK(const scalar ag, const scalar w)
-{
-    const scalar phi = 1 - ag;
-    const scalar Re = ag*rhog*w*d/mug;
-    const scalar F =
-        10*phi/(ag*ag) + ag*ag*(1 + 1.5*std::sqrt(phi))
-      + 0.413*Re/(24*ag*ag)
-       *(1/ag + 3*ag*phi + 8.4/std::pow(Re, 0.343))
-       /(1 + std::pow(10.0, 3*phi)/std::pow(Re, 0.5 + 2*phi));
-    return 3*piValue*mug*d*F;
-}
-
-// Syamlal & O'Brien (1988): beta = 3/4*as*ag*rhog*w/(Vr^2*d)*Cd(Re/Vr),
-// Dalla Valle Cd(Re) = (0.63 + 4.8/sqrt(Re))^2, Re = rhog*w*d/mug
-scalar handSyamlalOBrien(const scalar ag, const scalar w)
-{
-    const scalar Re = rhog*w*d/mug;
-    const scalar A = std::pow(ag, 4.14);
-    const scalar B = ag <= 0.85 ? 0.8*std::pow(ag, 1.28) : std::pow(ag, 2.65);
-    const scalar Vr =
-        0.5*(A - 0.06*Re + std::sqrt(0.0036*Re*Re + 0.12*Re*(2*B - A) + A*A));
-    const scalar Cd = std::pow(0.63 + 4.8/std::sqrt(Re/Vr), 2);
-    const scalar beta = 0.75*(1 - ag)*ag*rhog*w*Cd/(Vr*Vr*d);
-    return Vp*beta/((1 - ag)*ag);
-}
-
-// Stokes drag 3*pi*mu*d*w on a sphere, with Wen-Yu's voidage factor on
-// beta (ag^-2.65) and the 1/ag of CorrelationDragForce
-scalar handStokes(const scalar ag, const scalar w)
-{
-    return 3*piValue*mug*d*std::pow(ag, -3.65);
-}
-
-// Constant Cd: drag 0.5*rhog*Cd*(piValue*d^2/4)*w^2
-scalar handConstantCd(const scalar Cd, const scalar w)
-{
-    return 0.5*rhog*Cd*piValue*d*d/4*w;
-}
+using namespace Foam::handDragValues;
 
 
 // * * * * * * * * * * * * * * * * * Helpers * * * * * * * * * * * * * * * //
 
-// The force's coefficients as they stand in particleForces: model { text }
-dictionary coeffs(const word& model, const string& text)
-{
-    const dictionary forces(IStringStream(model + " { " + text + " }")());
-    return forces.subDict(model);
-}
-
-
+// The force selected by name with its coefficients: model { text }
 autoPtr<ParticleForce<cloudType>> select
 (
     cloudType& cloud,
@@ -175,10 +52,9 @@ autoPtr<ParticleForce<cloudType>> select
     const string& text
 )
 {
-    return ParticleForce<cloudType>::New
-    (
-        cloud, mesh, coeffs(model, text), model
-    );
+    const dictionary forces(IStringStream(model + " { " + text + " }")());
+    return
+        ParticleForce<cloudType>::New(cloud, mesh, forces.subDict(model), model);
 }
 
 
