@@ -103,14 +103,8 @@ cd "$case" || exit 1
 import glob, math, os, re, sys
 sys.path.insert(0, ".")
 import cfbResults as c
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
-from checks import read_list
-
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
-from checks import report as check
+from checks import read_list, report as check
 
 rho, d = 860.0, 8.7e-4
 vp1 = math.pi/6*d**3
@@ -142,7 +136,7 @@ nLost = int(esc[round(mon[-1][0], 9)][0])
 check(nLost > 0, "%d parcels left through the outlet by %.4g s" % (nLost, mon[-1][0]))
 
 # at the write times, from the parcels' own fields
-V = c.internal_field("0/V")
+V = c.post.internal_field("0/V")
 vParcel = nParticle*vp1
 def is_time(name):
     try:
@@ -161,7 +155,7 @@ for t in times:
     mass = math.fsum(a*r*math.pi/6*b**3 for a, b, r in zip(nP, dd, rr))
     tEsc = min(esc, key=lambda k: abs(k - float(t)))
     worstField = max(worstField, abs((mass + esc[tEsc][1])/mInjected - 1))
-    alpha = c.internal_field(os.path.join(t, "alpha.kinematicCloud"))
+    alpha = c.post.internal_field(os.path.join(t, "alpha.kinematicCloud"))
     for a, v in zip(alpha, V):
         excess = a - max(1.05*0.6, 0.6 + vParcel/v)
         if excess > worstCell[0]:

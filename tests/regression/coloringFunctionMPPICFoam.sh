@@ -23,9 +23,6 @@ import sys
 rows = [l.split() for l in open(sys.argv[1] +
         "/postProcessing/packingMonitor/0/packingMonitor.dat")
         if l.strip() and not l.startswith("#")]
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 check(len(rows) == 250, "250 monitor rows (%d)" % len(rows))

@@ -23,9 +23,6 @@ runAllrun "$runDir/case" 0.02 -continue || exit 1
 cd "$runDir/case" || exit 1
 /usr/bin/python3 - <<'PY'
 import re, sys
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 log = open("log.mppicPimpleFoam").read()

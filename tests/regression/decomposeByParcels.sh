@@ -62,9 +62,6 @@ cat log.weighted
 status=0
 /usr/bin/python3 - <<'PY' || status=1
 import re
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 def table(log):
@@ -84,7 +81,7 @@ log = open("log.mppicPimpleFoam").read()
 counts = re.findall(r"Cloud: parcels = (\d+)", log)
 check(len(counts) == 10 and all(int(c) == 7680 for c in counts),
       "2 ranks on the manual decomposition: 7680 parcels at each of %d steps" % len(counts))
-sys.exit(checks.status())
+raise SystemExit(checks.status())
 PY
 check fatal log.badN $rcN "n (1 3 1)" "numberOfSubdomains 2" || status=1
 check fatal log.badWeight $rcWeight "parcelWeight -1" "[0, inf)" || status=1

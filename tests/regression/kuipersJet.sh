@@ -32,9 +32,6 @@ import sys
 sys.path.insert(0, ".")
 import kuipersJetResults as k
 res = k.summary(".", 0.1)
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 mon = res["monitor"]

@@ -29,9 +29,6 @@ cd "$runDir/case" || exit 1
 import sys
 sys.path.insert(0, ".")
 import minimumFluidizationResults as m
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 mu, rho_g, rho_p, d, eps, g = 1.8e-5, 1.0, 860.0, 8.7e-4, 0.38, 9.81

@@ -27,9 +27,6 @@ grep -l -E 'FOAM FATAL|FOAM aborting' "$case"/log.* && exit 1
 cd "$case" || exit 1
 /usr/bin/python3 - <<'PY'
 import re, sys
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 log = open("log.mppicPimpleFoam").read()

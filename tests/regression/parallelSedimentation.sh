@@ -37,12 +37,9 @@ do
     (cd "$case" && /usr/bin/python3 - "$n" "$endTime") <<'PY' || status=1
 import re, sys
 sys.path.insert(0, ".")
-from sedimentationResults import read_monitor, bed_profile, latest_time, \
+from sedimentationResults import read_monitor, bed_profile, post, \
     surface_height, seeded_solids_volume
 n, end = sys.argv[1], float(sys.argv[2])
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 def check(ok, what):
     checks.report(ok, "%s ranks: " % n + what)
@@ -59,7 +56,7 @@ mass = rows[-1][2]
 check(abs(mass/(seeded_solids_volume(".")*2500) - 1) < 1e-9,
       "cloud mass %.10g kg = seeded volume * 2500" % mass)
 if end >= 1:
-    ys, prof, dy, _, _ = bed_profile(".", latest_time("."))
+    ys, prof, dy, _, _ = bed_profile(".", post.latest_time("."))
     h = surface_height(ys, prof, 0.5*cp, dy)
     check(abs(h/0.0375 - 1) <= 0.03, "bed height %.4f m within 3 %% of 0.0375 m" % h)
 sys.exit(checks.status())

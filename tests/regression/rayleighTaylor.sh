@@ -34,9 +34,6 @@ import re
 import sys
 sys.path.insert(0, ".")
 import rayleighTaylorResults as rt
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 res = rt.summary(".")

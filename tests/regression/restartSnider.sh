@@ -54,9 +54,6 @@ done
 cd "$runDir" || exit 1
 /usr/bin/python3 - <<'PY'
 import re, subprocess, sys
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 

@@ -26,17 +26,14 @@ status=0
 /usr/bin/python3 - <<'PY' || status=1
 import math, sys
 sys.path.insert(0, ".")
-from sedimentationResults import read_monitor, bed_profile, latest_time, \
+from sedimentationResults import read_monitor, bed_profile, post, \
     surface_height, seeded_solids_volume
 cp, rows = read_monitor(".")
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 min_gas = min(r[6] for r in rows)
 check(min_gas >= 0, "gas fraction never below 0 (min %.4f)" % min_gas)
-ys, prof, dy, _, _ = bed_profile(".", latest_time("."))
+ys, prof, dy, _, _ = bed_profile(".", post.latest_time("."))
 h = surface_height(ys, prof, 0.5*cp, dy)
 check(abs(h/0.0375 - 1) <= 0.03, "bed height %.4f m within 3 %% of 0.0375 m" % h)
 mass = rows[-1][2]

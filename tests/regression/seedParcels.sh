@@ -71,9 +71,6 @@ pts = [tuple(map(float, t)) for t in
        re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
 seeded = open(case + "/constant/seededParcels").read()
 nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 counts = {}
@@ -137,9 +134,6 @@ n = len(re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text))
 seeded = open(case + "/constant/seededParcels").read()
 nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
 expected = 0.3*0.1/(56*math.pi/6*1e-6)
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 check(n == 56, "statisticalWeight 1000: 56 parcels (%d)" % n)
@@ -185,9 +179,6 @@ pts = [tuple(map(float, t)) for t in
        re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
 seeded = open(case + "/constant/seededParcels").read()
 nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 cells = {}

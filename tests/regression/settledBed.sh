@@ -49,9 +49,6 @@ tau = rho_p*(1 - eps)/beta
 f = 1 - tau/dt*(1 - math.exp(-dt/tau))
 print("u_slip %.5f m/s, tau %.3e s, f %.4f" % (u_slip, tau, f))
 
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 

@@ -60,9 +60,6 @@ check sameState "$runDir/every0" "$runDir/every1" 0.0015 1e-9 \
 /usr/bin/python3 - "$runDir/every0/0.0015" "$runDir/every1/0.0015" <<'PY' || status=1
 import os, sys
 import numpy as np
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import read_rows, report
 

@@ -25,9 +25,6 @@ cd "$runDir/case" || exit 1
 import sys
 sys.path.insert(0, ".")
 import uniformFluidizationResults as u
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 weight = 0.1*0.12*0.01*0.6*2500*9.81/0.001

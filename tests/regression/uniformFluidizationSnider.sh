@@ -41,9 +41,6 @@ cd "$runDir/case" || exit 1
 import sys
 sys.path.insert(0, ".")
 import uniformFluidizationResults as u
-import os
-import sys
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests", "lib"))
 import checks
 from checks import report as check
 res = u.summary(".", 1.2)

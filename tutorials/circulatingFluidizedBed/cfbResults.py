@@ -38,6 +38,12 @@ import os
 import re
 import sys
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", ".."),
+                                "tutorials", "lib"))
+import mppicPost as post  # noqa: E402 (tutorials/lib)
+
 RHO_P = 860.0            # HDPE, kg/m3 (constant/kinematicCloudProperties)
 CLOSE_PACK = 0.6
 STANDPIPE_Y0 = 0.146     # top of the bend, bottom of the straight standpipe
@@ -47,22 +53,9 @@ HEIGHT_AVERAGE = 0.02    # m, running mean along the axis
 TAPS = {"riser005": 0, "riser119": 4, "standpipe016": 5, "standpipe090": 8}
 
 
-def rows(path):
-    """Rows of numbers of a whitespace table, '#' comments skipped."""
-    out = []
-    for line in open(path):
-        line = line.strip()
-        if not line or line.startswith("#"):
-            continue
-        try:
-            out.append([float(v) for v in line.split()])
-        except ValueError:
-            continue
-    return out
-
-
 def time_dirs(path):
-    """Start-time subdirectories of a postProcessing folder, in order."""
+    """Start-time subdirectories of a postProcessing folder, in order (a
+    continued run writes one per start)."""
     dirs = [d for d in glob.glob(os.path.join(path, "*")) if os.path.isdir(d)]
     return sorted(dirs, key=lambda d: float(os.path.basename(d)))
 
@@ -73,25 +66,9 @@ def series(path, name):
     for d in time_dirs(path):
         f = os.path.join(d, name)
         if os.path.isfile(f):
-            for r in rows(f):
+            for r in post.read_table(f):
                 out[r[0]] = r
     return [out[t] for t in sorted(out)]
-
-
-def dict_value(path, key):
-    m = re.search(r"^\s*" + re.escape(key) + r"\s+([^;]+);", open(path).read(), re.M)
-    return m.group(1).strip() if m else None
-
-
-def internal_field(path):
-    """Values of a volScalarField/volVectorField file (ascii)."""
-    text = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\((.*?)\n\)",
-                  text, re.S)
-    if m.group(1) == "scalar":
-        return [float(v) for v in m.group(3).split()]
-    return [tuple(map(float, t)) for t in
-            re.findall(r"\(([-\d.eE+]+) ([-\d.eE+]+) ([-\d.eE+]+)\)", m.group(3))]
 
 
 def solver_log(case):
@@ -151,7 +128,7 @@ def outlet_escapes(case):
         names = header[1:].split()
         i_n = names.index("outlet_nEscape_0")
         i_m = names.index("outlet_massEscape_0")
-        for r in rows(f):
+        for r in post.read_table(f):
             out.append((r[0], r[i_n], r[i_m]))
     out.sort()
     return out
@@ -173,7 +150,7 @@ def standpipe_heights(case):
         f = glob.glob(os.path.join(d, "standpipeAxis_*.xy"))
         if not f:
             continue
-        prof = rows(f[0])
+        prof = post.read_table(f[0])
         ys = [r[0] for r in prof]
         al = [r[1] for r in prof]
         dy = ys[1] - ys[0]
@@ -196,11 +173,6 @@ def collector(case, name):
     return [(r[0], r[2]) for r in series(path, "particleCollector.dat")]
 
 
-def window_mean(pairs, t0, t1):
-    v = [x for t, x in pairs if t0 - 1e-12 <= t <= t1 + 1e-12 and x is not None]
-    return (sum(v)/len(v), len(v)) if v else (float("nan"), 0)
-
-
 def rate(pairs, t0, t1):
     """Slope of an accumulated mass between the first and last write times
     of the window (kg/s)."""
@@ -211,7 +183,7 @@ def rate(pairs, t0, t1):
 
 
 def summary(case=".", t0=None, t1=None):
-    rho = float(dict_value(os.path.join(case, "constant", "transportProperties"),
+    rho = float(post.dict_entry(os.path.join(case, "constant", "transportProperties"),
                            "rho.air"))
     probes = series(os.path.join(case, "postProcessing", "pressureTaps"), "p")
     mon = series(os.path.join(case, "postProcessing", "packingMonitor"),
@@ -227,8 +199,8 @@ def summary(case=".", t0=None, t1=None):
              for r in probes]
     stand = [(r[0], rho*(r[1 + TAPS["standpipe016"]] - r[1 + TAPS["standpipe090"]]))
              for r in probes]
-    res["riserDp"], _ = window_mean(riser, t0, t1)
-    res["standpipeDp"], _ = window_mean(stand, t0, t1)
+    res["riserDp"], _ = post.window_mean(riser, t0, t1)
+    res["standpipeDp"], _ = post.window_mean(stand, t0, t1)
     res["riserDpSeries"], res["standpipeDpSeries"] = riser, stand
 
     inv = {}
@@ -239,15 +211,15 @@ def summary(case=".", t0=None, t1=None):
         s = series(path, "volFieldValue.dat")
         inv[zone] = (vol, [(r[0], r[1]) for r in s])
     res["riserMassSeries"] = [(t, v*RHO_P) for t, v in inv["Riser"][1]]
-    res["riserMass"], _ = window_mean(res["riserMassSeries"], t0, t1)
+    res["riserMass"], _ = post.window_mean(res["riserMassSeries"], t0, t1)
     area = inv["Standpipe"][0]/STANDPIPE_LENGTH if inv["Standpipe"][0] else float("nan")
     res["standpipeArea"] = area
     res["packedHeightSeries"] = [(t, v/(CLOSE_PACK*area)) for t, v in inv["Standpipe"][1]]
-    res["packedHeight"], _ = window_mean(res["packedHeightSeries"], t0, t1)
+    res["packedHeight"], _ = post.window_mean(res["packedHeightSeries"], t0, t1)
 
     levels = standpipe_heights(case)
     res["levelSeries"] = levels
-    res["level"], res["nLevels"] = window_mean(levels, t0, t1)
+    res["level"], res["nLevels"] = post.window_mean(levels, t0, t1)
     res["heightAboveBend"] = res["level"] - STANDPIPE_Y0
 
     res["standpipeFluxSeries"] = collector(case, "standpipeFlux")
@@ -293,16 +265,16 @@ def mesh_figures(case="."):
         if os.path.isfile(os.path.join(case, "log.gmsh")) else None
     if m:
         out["cellSize"] = float(m.group(1))
-    V = sorted(internal_field(os.path.join(case, "0", "V")))
+    V = sorted(post.internal_field(os.path.join(case, "0", "V")))
     out["volume"] = math.fsum(V)
     out["minV"], out["medianV"], out["maxV"] = V[0], V[len(V)//2], V[-1]
     seeded = os.path.join(case, "constant", "seededParcels")
-    d = float(dict_value(os.path.join(case, "system", "mppicSeedParcelsDict"), "diameter"))
-    W = float(dict_value(os.path.join(case, "system", "mppicSeedParcelsDict"),
+    d = float(post.dict_entry(os.path.join(case, "system", "mppicSeedParcelsDict"), "diameter"))
+    W = float(post.dict_entry(os.path.join(case, "system", "mppicSeedParcelsDict"),
                          "statisticalWeight"))
     out["statisticalWeight"] = W
-    out["nParticle"] = float(dict_value(seeded, "nParticle"))
-    out["nParcels"] = int(float(dict_value(seeded, "nParcels")))
+    out["nParticle"] = float(post.dict_entry(seeded, "nParticle"))
+    out["nParcels"] = int(float(post.dict_entry(seeded, "nParcels")))
     vp = out["nParticle"]*math.pi/6*d**3
     out["parcelVolume"] = vp
     out["parcelOverMedianCell"] = vp/out["medianV"]
@@ -354,93 +326,6 @@ def print_summary(r):
     print("  wall time per simulated second            %8.0f s" % r["wallPerSimSecond"])
 
 
-def plot(r, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(5, 1, figsize=(8, 13), sharex=True)
-    t, v = zip(*r["riserDpSeries"])
-    ax[0].plot(t, v, lw=0.5, label="riser (y 0.05-1.19)")
-    t, v = zip(*r["standpipeDpSeries"])
-    ax[0].plot(t, v, lw=0.5, label="standpipe (y 0.16-0.90)")
-    ax[0].set_ylabel("pressure drop [Pa]")
-    ax[0].set_ylim(-500, 3000)
-    ax[0].legend(loc="upper right")
-    lv = [(t, y) for t, y in r["levelSeries"] if y is not None]
-    if lv:
-        t, v = zip(*lv)
-        ax[1].plot(t, v, ".", ms=3, label="level y, axis profile > 0.3")
-    t, v = zip(*r["packedHeightSeries"])
-    ax[1].plot(t, [h + STANDPIPE_Y0 for h in v], lw=1,
-               label="0.146 + packed-equivalent height")
-    ax[1].set_ylabel("standpipe level [m]")
-    ax[1].legend(loc="upper right")
-    t, v = zip(*r["riserMassSeries"])
-    ax[2].plot(t, v, lw=1)
-    ax[2].set_ylabel("solids in riser [kg]")
-    for key, label in (("standpipeFluxSeries", "down the standpipe (y 0.20)"),
-                       ("crossoverFluxSeries", "through the crossover")):
-        if r[key]:
-            t, v = zip(*r[key])
-            ax[3].plot(t, v, "o-", ms=3, label=label)
-    ax[3].set_ylabel("accumulated solids [kg]")
-    ax[3].legend(loc="upper left")
-    mon = r["monitor"]
-    ax[4].plot([x[0] for x in mon], [x[4] for x in mon], lw=0.5, label="max cell solids fraction")
-    ax[4].axhline(CLOSE_PACK, color="k", ls=":", lw=0.8)
-    ax[4].set_ylabel("max cell eps_s")
-    ax[4].set_xlabel("time [s]")
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-
-
-def plot_geometry(case, path):
-    """Boundary face centres by patch (x-y and z-y views), with the pressure
-    taps, the collector planes and the inventory box."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    def body(f):
-        t = open(f).read()
-        t = t[t.index("}", t.index("FoamFile")) + 1:]
-        return re.sub(r"//.*", "", t)
-    mesh = os.path.join(case, "constant", "polyMesh")
-    P = [tuple(map(float, t)) for t in re.findall(
-        r"\(([-\d.eE+]+) ([-\d.eE+]+) ([-\d.eE+]+)\)", body(os.path.join(mesh, "points")))]
-    F = [list(map(int, f.split())) for f in
-         re.findall(r"\d+\(([\d ]+)\)", body(os.path.join(mesh, "faces")))]
-    patches = re.findall(r"(\w+)\s*\{[^}]*nFaces\s+(\d+);\s*startFace\s+(\d+);",
-                         body(os.path.join(mesh, "boundary")))
-    colours = {"walls": "0.75", "riserInlet": "tab:blue", "outlet": "tab:red",
-               "aerationStandpipe": "tab:green", "aerationBend": "tab:purple"}
-    fig, ax = plt.subplots(1, 2, figsize=(7.5, 12), gridspec_kw={"width_ratios": [2.13, 1]})
-    for name, nf, sf in patches:
-        nf, sf = int(nf), int(sf)
-        cs = [tuple(sum(P[i][k] for i in F[f])/len(F[f]) for k in range(3))
-              for f in range(sf, sf + nf)]
-        size = 0.3 if name == "walls" else 10
-        ax[0].scatter([c[0] for c in cs], [c[1] for c in cs], s=size,
-                      c=colours.get(name, "k"), label=name)
-        ax[1].scatter([c[2] for c in cs], [c[1] for c in cs], s=size,
-                      c=colours.get(name, "k"))
-    taps = [(0.282, 0.05), (0.282, 1.19), (0.0727, 0.16), (0.0727, 0.90)]
-    ax[0].plot([t[0] for t in taps], [t[1] for t in taps], "k^", ms=6,
-               label="pressure taps (dP)")
-    ax[0].plot([0.0527, 0.0927], [0.20, 0.20], "r-", lw=2, label="standpipe collector")
-    ax[0].plot([0.1783, 0.1874], [1.218, 1.218], "m-", lw=2, label="crossover collector")
-    ax[0].add_patch(matplotlib.patches.Rectangle((0.045, 0), 0.2, 0.932, fill=False,
-                                                 ls="--", lw=0.8, label="initial inventory box"))
-    for a in ax:
-        a.set_aspect("equal")
-    ax[0].set_xlabel("x [m]")
-    ax[0].set_ylabel("y [m]")
-    ax[1].set_xlabel("z [m]")
-    ax[0].legend(loc="center", bbox_to_anchor=(0.55, 0.55), fontsize=7, markerscale=2)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-
-
 def main(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("case", nargs="?", default=".")
@@ -452,7 +337,8 @@ def main(argv):
                    help="draw cfb_geometry.png (patches, taps, planes) and stop")
     a = p.parse_args(argv)
     if a.geometry:
-        plot_geometry(a.case, os.path.join(a.case, "cfb_geometry.png"))
+        import cfbPlots
+        cfbPlots.plot_geometry(a.case, os.path.join(a.case, "cfb_geometry.png"))
         print("wrote cfb_geometry.png")
         return
     if a.mesh:
@@ -460,7 +346,8 @@ def main(argv):
     r = summary(a.case, a.t0, a.t1)
     print_summary(r)
     if a.plot:
-        plot(r, os.path.join(a.case, "cfb_history.png"))
+        import cfbPlots
+        cfbPlots.plot(r, os.path.join(a.case, "cfb_history.png"))
         print("wrote cfb_history.png")
 
 

@@ -25,6 +25,7 @@ import os
 import sys
 
 import cfbResults
+from cfbResults import post
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -40,13 +41,7 @@ def reference():
 
 def slope(series, t0, t1):
     p = [(t, v) for t, v in series if t0 - 1e-12 <= t <= t1 + 1e-12]
-    if len(p) < 3:
-        return float("nan")
-    n = len(p)
-    mt = sum(t for t, v in p)/n
-    mv = sum(v for t, v in p)/n
-    stt = sum((t - mt)**2 for t, v in p)
-    return sum((t - mt)*(v - mv) for t, v in p)/stt
+    return post.fit_line(p)[0] if len(p) >= 3 else float("nan")
 
 
 def parse(run):

@@ -161,6 +161,15 @@ def mean_abs_difference(h, eps, measured):
     return sum(diffs)/len(diffs) if diffs else float("nan")
 
 
+def packed_share(grid, level=0.59):
+    """The share of the bed's solids in cells packed throughout the window
+    (time-mean eps_s >= level, with close pack 0.62 and 5 parcels = 0.60):
+    defluidized regions, which rest on what is below them."""
+    total = sum(sum(row) for row in grid)
+    packed = sum(a for row in grid for a in row if a >= level)
+    return packed/total if total > 0 else float("nan")
+
+
 def summary(case, t0=None):
     """Every number of the case, as a dict (missing pieces are absent)."""
     res = {}
@@ -205,6 +214,7 @@ def summary(case, t0=None):
                 grid = to_grid(mean, cells, len(xs), len(ys))
                 res["meanGrid"] = (name, grid)
                 res["expansion"] = bed_expansion(grid, ys)
+                res["packedShare"] = packed_share(grid)
                 break
     slab_grids(case, res)
     res["profiles"] = sampled_profiles(case)
@@ -272,6 +282,8 @@ def print_report(res, label):
                   res["slabSource"], res["t0"], 100*res["slab"]))
     print("  bed expansion (time-averaged eps_s < 0.05 above): %s m (initial 0.5 m)"
           % fmt(res, "expansion", "%.3f"))
+    print("  solids in cells packed throughout the window (time-mean eps_s"
+          " >= 0.59): %s of the bed" % fmt(res, "packedShare", "%.3f"))
     for x_cm in (3.4, 6.4):
         print("  profile %.1f cm: mean |difference| from Kuipers' points: ours"
               " %s, MFiX-PIC %.4f" % (

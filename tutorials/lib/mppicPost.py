@@ -2,18 +2,25 @@
 the statistics and bookkeeping of a bed.
 
 Readers (OpenFOAM ascii output of a case folder):
+    read_text(path)                    a file's text, or its .gz's
     function_object_table(case, name)  postProcessing/<name>/<t>/<name>.dat,
                                        the pieces of a continued run joined
+    dict_entry(path, key)              the first 'key value;' of a file, text
+    dict_number(path, key)             the first 'key <number>;', a float
     control_entry(case, key)           a top-level entry of system/controlDict
-    time_dirs(case)                    [(t, folder name)] of the written times
+    time_dirs(case), latest_time(case) the written times
     internal_field(path)               a volField's internalField
     lagrangian_field(path)             a written cloud field, one row a parcel
+    layer_means(values, centres)       means over layers of cells (by height)
 
 Statistics:
     percentile(values, q)              linear between order statistics
     mean_and_error(series, block)      mean, std and the standard error of
                                        the mean from block means
     interpolate(xs, ys, x)             linear, None outside [xs[0], xs[-1]]
+    window_mean(pairs, t0, t1)         mean of [(t, v)] over t0 <= t <= t1
+    fit_line(points)                   least-squares slope and intercept
+    fit_through_origin(points)         least-squares slope of y = a*x
 
 A bed's vertical momentum budget over a window (packingMonitor's columns):
     packing_force(rows, mass)          the packing step's mean upward force
@@ -41,6 +48,15 @@ MONITOR_MASS, MONITOR_PACKING_Y = 2, 9
 
 
 # * * * * * * * * * * * * * * * * Readers  * * * * * * * * * * * * * * * * * #
+
+def read_text(path):
+    """A file's text, or that of path.gz (writeCompression on)."""
+    if os.path.exists(path) or not os.path.exists(path + ".gz"):
+        return open(path).read()
+    import gzip
+    with gzip.open(path + ".gz", "rt") as f:
+        return f.read()
+
 
 def read_table(path):
     """Rows of a function object's .dat file (comment lines and lines that
@@ -77,6 +93,24 @@ def control_entry(case, key):
     return m.group(1).strip() if m else None
 
 
+def dict_entry(path, key):
+    """The value of the first 'key value;' line of a dictionary file (at
+    any depth), as text; None if absent."""
+    m = re.search(r"^\s*" + re.escape(key) + r"\s+([^;]+);",
+                  read_text(path), re.M)
+    return m.group(1).strip() if m else None
+
+
+def dict_number(path, key):
+    """The first 'key <number>;' of a dictionary file, as a float; stops
+    with a message naming the key and the file if there is none."""
+    m = re.search(r"^\s*%s\s+([-0-9.eE+]+)\s*;" % re.escape(key),
+                  read_text(path), re.M)
+    if not m:
+        raise SystemExit("no %s in %s" % (key, path))
+    return float(m.group(1))
+
+
 def time_dirs(case):
     """[(t, folder name)] of the case's time folders, by time."""
     out = []
@@ -86,6 +120,11 @@ def time_dirs(case):
         except ValueError:
             pass
     return sorted(out)
+
+
+def latest_time(case):
+    """The folder name of the case's latest written time."""
+    return time_dirs(case)[-1][1]
 
 
 def internal_field(path):
@@ -117,6 +156,17 @@ def lagrangian_field(path):
         return [[float(v) for v in t.split()]
                 for t in re.findall(r"\(([^()]*)\)", body)]
     return [[float(v)] for v in body.split()]
+
+
+def layer_means(values, centres, axis=1, digits=9):
+    """Means of a cell field over the layers of cells at one height (the
+    centres' coordinate along axis, rounded to digits): (heights, means),
+    by height."""
+    layers = {}
+    for v, c in zip(values, centres):
+        layers.setdefault(round(c[axis], digits), []).append(v)
+    heights = sorted(layers)
+    return heights, [sum(layers[h])/len(layers[h]) for h in heights]
 
 
 # * * * * * * * * * * * * * * * * Statistics * * * * * * * * * * * * * * * * #
@@ -151,6 +201,30 @@ def interpolate(xs, ys, x):
     if x < xs[0] or x > xs[-1]:
         return None
     return float(np.interp(x, xs, ys))
+
+
+def window_mean(pairs, t0, t1):
+    """Mean of the values v of [(t, v)] with t0 <= t <= t1 (to 1e-12) that
+    are not None, and their count; (nan, 0) if none."""
+    v = [x for t, x in pairs if t0 - 1e-12 <= t <= t1 + 1e-12 and x is not None]
+    return (sum(v)/len(v), len(v)) if v else (float("nan"), 0)
+
+
+def fit_line(points):
+    """Least-squares line through [(x, y)]: (slope, intercept); slope 0
+    where the x do not vary."""
+    n = len(points)
+    mx = sum(x for x, _ in points)/n
+    my = sum(y for _, y in points)/n
+    sxx = sum((x - mx)**2 for x, _ in points)
+    slope = sum((x - mx)*(y - my) for x, y in points)/sxx if sxx > 0 else 0.0
+    return slope, my - slope*mx
+
+
+def fit_through_origin(points):
+    """Least-squares a of y = a*x through [(x, y)]; nan where all x = 0."""
+    sxx = sum(x*x for x, _ in points)
+    return sum(x*y for x, y in points)/sxx if sxx > 0 else float("nan")
 
 
 # * * * * * * * * * * * * * A bed's momentum budget * * * * * * * * * * * * * #

@@ -36,20 +36,17 @@ import os
 import re
 import sys
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", "..", ".."),
+                                "tutorials", "lib"))
+import mppicPost as post  # noqa: E402 (tutorials/lib)
+
 MEASURED_UMF = 0.182
 G = 9.81
 TABLE_HEAD = ("| run | Umf, fits [m/s] | vs 0.182 | bed unlocks at [m/s] "
               "| plateau dP* | fixed bed vs Ergun | Ergun Umf [m/s] |\n"
               "|---|---|---|---|---|---|---|")
-
-
-def entry(path, key):
-    """First 'key value;' of a dictionary file, as a float."""
-    text = open(path).read()
-    match = re.search(r"^\s*%s\s+([-0-9.eE+]+)\s*;" % key, text, re.M)
-    if not match:
-        raise SystemExit("no %s in %s" % (key, path))
-    return float(match.group(1))
 
 
 def particle_diameter(case):
@@ -60,16 +57,16 @@ def particle_diameter(case):
 def bed(case):
     cloud = os.path.join(case, "constant", "kinematicCloudProperties")
     transport = os.path.join(case, "constant", "transportProperties")
-    rho_g = entry(transport, "rho.air")
+    rho_g = post.dict_number(transport, "rho.air")
     return {
-        "rho_p": entry(cloud, "rho0"),
-        "alpha": entry(cloud, "closePackFraction"),
-        "switch": entry(cloud, "switchFraction"),
+        "rho_p": post.dict_number(cloud, "rho0"),
+        "alpha": post.dict_number(cloud, "closePackFraction"),
+        "switch": post.dict_number(cloud, "switchFraction"),
         "d": particle_diameter(case),
         "rho_g": rho_g,
-        "mu": rho_g*entry(transport, "nu"),
-        "rampTime": entry(os.path.join(case, "0", "U.air"), "rampTime"),
-        "rampVelocity": entry(os.path.join(case, "0", "U.air"), "rampVelocity"),
+        "mu": rho_g*post.dict_number(transport, "nu"),
+        "rampTime": post.dict_number(os.path.join(case, "0", "U.air"), "rampTime"),
+        "rampVelocity": post.dict_number(os.path.join(case, "0", "U.air"), "rampVelocity"),
     }
 
 
@@ -103,10 +100,8 @@ def curve(case, b):
     path = os.path.join(case, "postProcessing", "bedPressureDrop", "0",
                         "bedPressureDrop.dat")
     points = []
-    for line in open(path):
-        if line.startswith("#") or not line.strip():
-            continue
-        t, _, _, dp, head, weight = [float(v) for v in line.split()[:6]]
+    for row in post.read_table(path):
+        t, _, _, dp, head, weight = row[:6]
         U = b["rampVelocity"]*min(t, b["rampTime"])/b["rampTime"]
         points.append((U, (dp - head)/weight))
     return points
@@ -127,15 +122,6 @@ def smooth(points, width=0.05):
     return [(U, p) for U, p in out if U > 0]
 
 
-def line_fit(points):
-    n = len(points)
-    mx = sum(u for u, _ in points)/n
-    my = sum(p for _, p in points)/n
-    sxx = sum((u - mx)**2 for u, _ in points)
-    slope = sum((u - mx)*(p - my) for u, p in points)/sxx if sxx > 0 else 0.0
-    return slope, my - slope*mx
-
-
 def construct_umf(points):
     """The seed's construction: the fixed-bed line crosses the plateau, a
     horizontal line at the mean dP* above 1.5 Umf; also where the curve
@@ -153,7 +139,7 @@ def construct_umf(points):
                      if 0.1*umf <= U and p < 0.8*plateau and U < umf]
         if len(fixed_pts) < 3:
             return None
-        fs, fi = line_fit(fixed_pts)
+        fs, fi = post.fit_line(fixed_pts)
         umf = (plateau - fi)/fs
     departure = next((U for U, p in points
                       if U > 0.5*umf and p < 0.97*(fi + fs*U)), None)

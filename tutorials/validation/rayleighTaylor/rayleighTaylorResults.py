@@ -33,6 +33,12 @@ import os
 import re
 import sys
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", "..", ".."),
+                                "tutorials", "lib"))
+import mppicPost as post  # noqa: E402 (tutorials/lib)
+
 Y0 = 0.3
 EPS0 = 0.2
 G = 9.81
@@ -41,50 +47,28 @@ TABLE_HEAD = ("| run | particle density | A | fit range [s] | alpha "
               "| in [0.05, 0.07] |\n|---|---|---|---|---|---|")
 
 
-def internal_field(path, vector=False):
-    text = open(path).read()
-    start = text.index("internalField")
-    head = re.search(r"nonuniform List<(scalar|vector)>\s*(\d+)\s*\(", text[start:])
-    n = int(head.group(2))
-    body = text[start + head.end():]
-    if vector:
-        values = re.findall(r"\(([-\d.eE+]+) ([-\d.eE+]+) ([-\d.eE+]+)\)", body)
-        return [tuple(float(v) for v in x) for x in values[:n]]
-    return [float(v) for v in body[:body.index(")")].split()[:n]]
-
-
-def entry(path, key):
-    match = re.search(r"^\s*%s\s+([-0-9.eE+]+)\s*;" % key, open(path).read(), re.M)
-    return float(match.group(1))
-
-
 def atwood(case):
-    rho_p = entry(os.path.join(case, "constant", "kinematicCloudProperties"), "rho0")
-    rho_g = entry(os.path.join(case, "constant", "transportProperties"), "rho.air")
+    rho_p = post.dict_number(os.path.join(case, "constant", "kinematicCloudProperties"), "rho0")
+    rho_g = post.dict_number(os.path.join(case, "constant", "transportProperties"), "rho.air")
     rho_mix = (1 - EPS0)*rho_g + EPS0*rho_p
     return rho_p, (rho_mix - rho_g)/(rho_mix + rho_g)
 
 
 def rows(case):
     """Row heights and, per written time, the row means of eps_s."""
-    centres = internal_field(os.path.join(case, "0", "C"), vector=True)
-    keys = sorted({round(c[1], 6) for c in centres})
-    index = {k: i for i, k in enumerate(keys)}
-    row_of = [index[round(c[1], 6)] for c in centres]
-    counts = [0]*len(keys)
-    for r in row_of:
-        counts[r] += 1
+    centres = post.internal_field(os.path.join(case, "0", "C"))
     times = sorted((d for d in os.listdir(case)
                     if re.match(r"^[0-9.]+$", d)
                     and os.path.exists(os.path.join(case, d, "alpha.air"))
                     and float(d) > 0), key=float)
-    history = []
+    keys, history = None, []
     for t in times:
-        alpha = internal_field(os.path.join(case, t, "alpha.air"))
-        sums = [0.0]*len(keys)
-        for r, a in zip(row_of, alpha):
-            sums[r] += 1 - a
-        history.append((float(t), [s/c for s, c in zip(sums, counts)]))
+        alpha = post.internal_field(os.path.join(case, t, "alpha.air"))
+        keys, means = post.layer_means([1 - a for a in alpha], centres,
+                                       digits=6)
+        history.append((float(t), means))
+    if keys is None:
+        keys = sorted({round(c[1], 6) for c in centres})
     return keys, history
 
 
@@ -95,12 +79,6 @@ def fronts(ys, profile):
     y_b = next((y for y, e in zip(ys, profile) if y > y_s and e >= 0.95*EPS0),
                y_s)
     return y_b, y_s
-
-
-def fit(points):
-    """alpha of h = alpha*x through the origin."""
-    sxx = sum(x*x for x, _ in points)
-    return sum(x*h for x, h in points)/sxx if sxx > 0 else float("nan")
 
 
 def summary(case):
@@ -120,7 +98,7 @@ def summary(case):
     res = {"rho_p": rho_p, "A": A, "series": series, "cell": cell}
     if len(usable) >= 3:
         res["range"] = (usable[0][0], usable[-1][0])
-        res["alpha"] = fit([(A*G*t*t, h) for t, h in usable])
+        res["alpha"] = post.fit_through_origin([(A*G*t*t, h) for t, h in usable])
     return res
 
 

@@ -21,24 +21,25 @@ Usage: depositionConservationResults.py [--case DIR] [--period T]
 --limit (default 1e-14); --plot writes depositionConservation_<label>.png.
 """
 import argparse
-import gzip
 import math
 import os
 import re
 import sys
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", "..", ".."),
+                                "tutorials", "lib"))
+import mppicPost as post  # noqa: E402 (tutorials/lib)
+
+
 GAS, CLOUD = "air", "kinematicCloud"
-
-
-def open_text(path):
-    return open(path) if os.path.exists(path) else gzip.open(path + ".gz",
-                                                                 "rt")
 
 
 def field_values(path):
     """Values of a scalar field file: a volScalarField's internalField or
     a lagrangian field, uniform or listed."""
-    text = open_text(path).read()
+    text = post.read_text(path)
     text = re.sub(r"//.*", "", text[text.index("}", text.index("FoamFile")):])
     start = text.find("internalField")
     text = text[start:] if start >= 0 else text
@@ -91,8 +92,8 @@ def main():
                 os.path.join(args.case, name, "lagrangian", CLOUD)):
             rows.append((k, float(name), balance(args.case, name, volumes)))
     rows.sort(key=lambda r: r[0])
-    nStart = sum(1 for line in open_text(os.path.join(
-        args.case, "constant", "kinematicCloudPositions"))
+    nStart = sum(1 for line in post.read_text(os.path.join(
+        args.case, "constant", "kinematicCloudPositions")).splitlines()
         if line.startswith("(") and line.strip() != "(")
 
     print("averaging %s: %d cells, %d parcels at the start"

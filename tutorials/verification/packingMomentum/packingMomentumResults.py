@@ -17,8 +17,16 @@ monitor's packing momentum summed over the steps.
 --check exits 1 when the run's form (conserveMomentum from the cloud
 properties) does not meet these statements.
 """
+import os
 import re
 import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", "..", ".."),
+                                "tutorials", "lib"))
+import mppicPost as post  # noqa: E402 (tutorials/lib)
+
 
 P0 = (0.15*0.04*0.01*0.005*2500*0.1, -0.15*0.04*0.01*0.005*2500*0.5, 0.0)
 CLOSE_PACK = 0.6
@@ -41,14 +49,13 @@ def read_log(path="log.mppicPimpleFoam"):
 
 
 def read_monitor(path="postProcessing/packingMonitor/0/packingMonitor.dat"):
-    rows = [l.split() for l in open(path) if l.strip() and l[0] != "#"]
-    packing = [[float(v) for v in r[8:11]] for r in rows]
-    return packing, max(float(r[4]) for r in rows)
+    rows = post.read_table(path)
+    packing = [r[8:11] for r in rows]
+    return packing, max(r[4] for r in rows)
 
 
 def conserve_setting(path="constant/kinematicCloudProperties"):
-    m = re.search(r"^\s*conserveMomentum\s+(\w+);", open(path).read(), re.M)
-    return m.group(1) in ("true", "on", "yes")
+    return post.dict_entry(path, "conserveMomentum") in ("true", "on", "yes")
 
 
 def norm(v):

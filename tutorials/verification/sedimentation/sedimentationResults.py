@@ -34,43 +34,19 @@ import os
 import re
 import sys
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", "..", ".."),
+                                "tutorials", "lib"))
+import mppicPost as post  # noqa: E402 (tutorials/lib)
+
 
 def read_monitor(case):
     path = os.path.join(case, "postProcessing", "packingMonitor", "0",
                         "packingMonitor.dat")
-    close_pack = None
-    rows = []
-    for line in open(path):
-        if line.startswith("#"):
-            m = re.match(r"#\s*closePackFraction\s*:\s*(\S+)", line)
-            if m:
-                close_pack = float(m.group(1))
-            continue
-        if line.strip():
-            rows.append([float(v) for v in line.split()])
-    return close_pack, rows
-
-
-def read_internal(path):
-    text = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\((.*?)\)\s*;",
-                  text, re.S)
-    if m is None:
-        raise RuntimeError("no nonuniform internalField in " + path)
-    if m.group(1) == "vector":
-        return [tuple(float(c) for c in t) for t in
-                re.findall(r"\(([^()]+?)\s+([^()]+?)\s+([^()]+?)\)", m.group(3))]
-    return [float(v) for v in m.group(3).split()]
-
-
-def latest_time(case):
-    times = []
-    for d in os.listdir(case):
-        try:
-            times.append((float(d), d))
-        except ValueError:
-            pass
-    return max(times)[1]
+    m = re.search(r"^#\s*closePackFraction\s*:\s*(\S+)", post.read_text(path),
+                  re.M)
+    return (float(m.group(1)) if m else None), post.read_table(path)
 
 
 def seeded_solids_volume(case):
@@ -81,11 +57,11 @@ def seeded_solids_volume(case):
 def bed_profile(case, time):
     solids = os.path.join(case, time, "alpha.kinematicCloud")
     if os.path.exists(solids):
-        alpha = read_internal(solids)
+        alpha = post.internal_field(solids)
     else:
         # stock MPPICFoam writes the gas fraction only
-        alpha = [1 - a for a in read_internal(os.path.join(case, time, "alpha.air"))]
-    centres = read_internal(os.path.join(case, time, "C"))
+        alpha = [1 - a for a in post.internal_field(os.path.join(case, time, "alpha.air"))]
+    centres = post.internal_field(os.path.join(case, time, "C"))
     rows = {}
     for a, c in zip(alpha, centres):
         rows.setdefault(round(c[1], 9), []).append((a, c))
@@ -123,7 +99,7 @@ def main():
     max_cell = max(r[4] for r in rows)
     min_gas = min(r[6] for r in rows)
 
-    time = latest_time(args.case)
+    time = post.latest_time(args.case)
     ys, profile, dy, xinfo, zinfo = bed_profile(args.case, time)
     area = args.width*args.depth
     cell_volume = area/(xinfo[0]*zinfo[0])*dy

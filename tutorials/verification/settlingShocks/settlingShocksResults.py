@@ -44,6 +44,12 @@ import os
 import re
 import sys
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", "..", ".."),
+                                "tutorials", "lib"))
+import mppicPost as post  # noqa: E402 (tutorials/lib)
+
 G = 9.81
 RHO_P, RHO_G, D_P, MU = 2000.0, 1000.0, 1e-3, 1e-3
 CLOSE_PACK = 0.6
@@ -77,19 +83,6 @@ def start_velocity(case):
     return float(m.group(2)) if m else 0.0
 
 
-def read_internal(path):
-    text = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*"
-                  r"\((.*?)\)\s*;", text, re.S)
-    if m is None:
-        raise RuntimeError("no nonuniform internalField in " + path)
-    if m.group(1) == "vector":
-        return [tuple(float(c) for c in t) for t in
-                re.findall(r"\(([^()]+?)\s+([^()]+?)\s+([^()]+?)\)",
-                           m.group(3))]
-    return [float(v) for v in m.group(3).split()]
-
-
 def seeding(case):
     text = open(os.path.join(case, "system", "mppicSeedParcelsDict")).read()
     es0 = float(re.search(r"\n\s*solidsFraction\s+([^;]+);", text).group(1))
@@ -98,13 +91,9 @@ def seeding(case):
 
 
 def layer_profile(case, time):
-    alpha = read_internal(os.path.join(case, time, "alpha.kinematicCloud"))
-    centres = read_internal(os.path.join(case, "0", "C"))
-    layers = {}
-    for a, c in zip(alpha, centres):
-        layers.setdefault(round(c[1], 9), []).append(a)
-    ys = sorted(layers)
-    return ys, [sum(layers[y])/len(layers[y]) for y in ys]
+    return post.layer_means(
+        post.internal_field(os.path.join(case, time, "alpha.kinematicCloud")),
+        post.internal_field(os.path.join(case, "0", "C")))
 
 
 def crossing(ys, profile, level, from_top):

@@ -23,22 +23,22 @@ with --plot it writes vortexAdvection.png (L1 against period, ours and
 MFiX-PIC; the parcels at 0, T/2 and T of the last period when written).
 """
 import argparse
-import gzip
 import os
 import re
 import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", "..", ".."),
+                                "tutorials", "lib"))
+import mppicPost as post  # noqa: E402 (tutorials/lib)
+
 
 # MFiX-PIC, Table 1 of seed 2 (= /work/shared/reference/vortex_advection_mfix.csv)
 MFIX_L1 = [2.11e-03, 1.22e-03, 2.59e-03, 2.44e-03, 3.46e-03, 3.65e-03,
            4.49e-03, 4.87e-03, 5.60e-03, 6.08e-03, 6.74e-03, 7.29e-03,
            7.90e-03, 8.51e-03, 9.08e-03, 9.72e-03]
 CLOUD = "kinematicCloud"
-
-
-def read_text(path):
-    if os.path.exists(path):
-        return open(path).read()
-    return gzip.open(path + ".gz", "rt").read()
 
 
 def list_body(text):
@@ -72,8 +72,8 @@ def parcels(case, time):
     if not os.path.exists(os.path.join(base, "origId")) \
             and not os.path.exists(os.path.join(base, "origId.gz")):
         return {}
-    pos = read_points(read_text(os.path.join(base, "positions")))
-    ids = read_labels(read_text(os.path.join(base, "origId")))
+    pos = read_points(post.read_text(os.path.join(base, "positions")))
+    ids = read_labels(post.read_text(os.path.join(base, "origId")))
     return dict(zip(ids, pos))
 
 
@@ -106,7 +106,7 @@ def main():
     parser.add_argument("--plot", action="store_true")
     args = parser.parse_args()
 
-    start = read_points(read_text(os.path.join(
+    start = read_points(post.read_text(os.path.join(
         args.case, "constant", "kinematicCloudPositions")))
     rows, complete = [], True
     for t, name in times(args.case):

@@ -21,6 +21,12 @@ import os
 import re
 import sys
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", "..", ".."),
+                                "tutorials", "lib"))
+import mppicPost as post  # noqa: E402 (tutorials/lib)
+
 KELVIN = 273.15
 
 
@@ -52,11 +58,6 @@ def table5(case):
     return {int(h): float(t) for h, t in rows}
 
 
-def window_mean(hist, t0, t1):
-    v = [T for t, T, m in hist if t0 <= t <= t1]
-    return sum(v)/len(v) if v else float("nan")
-
-
 def at(hist, t):
     """Temperature at the last step not after t."""
     best = hist[0][1]
@@ -73,7 +74,8 @@ def summary(case):
         raise SystemExit("%s: no droplet temperature in the log" % case)
     tEnd, TEnd, mEnd = hist[-1]
     mills = table5(case)[humidity(case)]
-    ours = window_mean(hist, tEnd - 0.5, tEnd) - KELVIN
+    ours = post.window_mean([(t, T) for t, T, _ in hist],
+                            tEnd - 0.5, tEnd)[0] - KELVIN
     return {
         "case": case,
         "humidity": humidity(case),
