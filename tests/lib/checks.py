@@ -89,13 +89,21 @@ def same_mass(ma, mb):
         and all(abs(x - y) <= MASS_RTOL*abs(y) for x, y in zip(ma, mb))
 
 
-def parity(a, b, time, t0, t1, tol):
+def same_cloud(a, b, time, names):
+    """Two runs hold the same parcels at a time: their count and their
+    masses (sorted) to MASS_RTOL; names label the runs in the lines."""
     ma, mb = parcel_masses(a, time), parcel_masses(b, time)
     report(len(ma) > 0 and len(ma) == len(mb),
-           "parcel count at t=%s: %d vs %d" % (time, len(ma), len(mb)))
+           "parcel count at t=%s: %s %d, %s %d"
+           % (time, names[0], len(ma), names[1], len(mb)))
     report(same_mass(ma, mb),
-           "cloud mass at t=%s: %.15g vs %.15g kg (relative %g)"
-           % (time, math.fsum(ma), math.fsum(mb), MASS_RTOL))
+           "cloud mass at t=%s: %s %.17g, %s %.17g kg (relative %g)"
+           % (time, names[0], math.fsum(ma), names[1], math.fsum(mb),
+              MASS_RTOL))
+
+
+def parity(a, b, time, t0, t1, tol):
+    same_cloud(a, b, time, ("first", "second"))
     pa, na = mean_delta_p(a, float(t0), float(t1))
     pb, nb = mean_delta_p(b, float(t0), float(t1))
     rel = abs(pa - pb)/abs(pb)
@@ -105,12 +113,7 @@ def parity(a, b, time, t0, t1, tol):
 
 
 def serial_parallel(s, p, time):
-    ms, mp = parcel_masses(s, time), parcel_masses(p, time)
-    report(len(ms) > 0 and len(ms) == len(mp),
-           "parcel count at t=%s: serial %d, parallel %d" % (time, len(ms), len(mp)))
-    report(same_mass(ms, mp),
-           "cloud mass at t=%s: serial %.17g, parallel %.17g kg (relative %g)"
-           % (time, math.fsum(ms), math.fsum(mp), MASS_RTOL))
+    same_cloud(s, p, time, ("serial", "parallel"))
 
 
 def cloud_mass(case, time, expected, tol):
