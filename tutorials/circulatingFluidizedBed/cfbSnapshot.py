@@ -11,16 +11,13 @@ Usage:
 import argparse
 import math
 import os
-import re
 import sys
 
-
-def vectors(path, tail=r""):
-    """The "(a b c)" entries of an ASCII lagrangian field, in order."""
-    text = open(path).read()
-    body = text[text.index("(", text.index("}")) if "}" in text else 0:]
-    pattern = r"\(\s*([-\d.eE+]+)\s+([-\d.eE+]+)\s+([-\d.eE+]+)\s*\)" + tail
-    return [tuple(float(v) for v in m[:3]) for m in re.findall(pattern, body)]
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", ".."),
+                                "tutorials", "lib"))
+import mppicPost as post  # noqa: E402 (tutorials/lib)
 
 
 def main():
@@ -30,8 +27,9 @@ def main():
     parser.add_argument("--out", default=None)
     args = parser.parse_args()
     cloud = os.path.join(args.case, args.time, "lagrangian", "kinematicCloud")
-    positions = vectors(os.path.join(cloud, "positions"), r"\s+\d+")
-    velocities = vectors(os.path.join(cloud, "U"))
+    positions = [tuple(r[:3]) for r in
+                 post.lagrangian_field(os.path.join(cloud, "positions"))]
+    velocities = [tuple(r) for r in post.lagrangian_field(os.path.join(cloud, "U"))]
     if len(positions) != len(velocities) or not positions:
         print("cfbSnapshot: %d positions, %d velocities in %s"
               % (len(positions), len(velocities), cloud))

@@ -27,6 +27,12 @@ import os
 import re
 import sys
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
+                                or os.path.join(HERE, "..", "..", ".."),
+                                "tutorials", "lib"))
+import mppicPost as post  # noqa: E402 (tutorials/lib)
+
 g, rhop, rhog, d, Cd, vg = 9.81, 2000.0, 1.2, 1e-4, 1.0, 0.4
 
 
@@ -54,11 +60,10 @@ def rk4(h0, times, h=1e-5):
 
 
 def parcel(case, time):
+    """Height and vertical velocity of the (one) parcel at a time."""
     base = os.path.join(case, time, "lagrangian", "kinematicCloud")
-    pos = open(os.path.join(base, "positions")).read()
-    y = float(re.search(r"\(\s*\(([^)]*)\)", pos).group(1).split()[1])
-    U = open(os.path.join(base, "U")).read()
-    v = float(re.search(r"1\s*\(\s*\(([^)]*)\)", U).group(1).split()[1])
+    y = post.lagrangian_field(os.path.join(base, "positions"))[0][1]
+    v = post.lagrangian_field(os.path.join(base, "U"))[0][1]
     return y, v
 
 
