@@ -53,6 +53,16 @@ def read_list(path):
     return [row[0] for row in read_rows(path)]
 
 
+def seeded_parcels(case):
+    """The positions mppicSeedParcels wrote (constant/kinematicCloudPositions)
+    and the nParticle it reports (constant/seededParcels)."""
+    text = open(os.path.join(case, "constant", "kinematicCloudPositions")).read()
+    pts = [tuple(map(float, t)) for t in
+           re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
+    seeded = open(os.path.join(case, "constant", "seededParcels")).read()
+    return pts, float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
+
+
 def parcel_masses(case, time, cloud="kinematicCloud"):
     d = os.path.join(case, time, "lagrangian", cloud)
     if not os.path.isdir(d):

@@ -66,11 +66,8 @@ checkSeeding()
     /usr/bin/python3 - "$case" "$1" <<'PY'
 import math, re, sys
 case, mode = sys.argv[1], sys.argv[2]
-text = open(case + "/constant/kinematicCloudPositions").read()
-pts = [tuple(map(float, t)) for t in
-       re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
-seeded = open(case + "/constant/seededParcels").read()
-nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
+from checks import seeded_parcels
+pts, nParticle = seeded_parcels(case)
 import checks
 from checks import report as check
 counts = {}
@@ -129,10 +126,9 @@ mppicSeedParcels -case "$case" > "$runDir/log.seedWeight" 2>&1 || exit 1
 /usr/bin/python3 - "$case" <<'PY' || status=1
 import math, re, sys
 case = sys.argv[1]
-text = open(case + "/constant/kinematicCloudPositions").read()
-n = len(re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text))
-seeded = open(case + "/constant/seededParcels").read()
-nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
+from checks import seeded_parcels
+pts, nParticle = seeded_parcels(case)
+n = len(pts)
 expected = 0.3*0.1/(56*math.pi/6*1e-6)
 import checks
 from checks import report as check
@@ -174,11 +170,8 @@ case, label, edges, counts, n = sys.argv[1:6]
 edges = [float(e) for e in edges.split()]
 counts = [int(c) for c in counts.split()]
 n = int(n)
-text = open(case + "/constant/kinematicCloudPositions").read()
-pts = [tuple(map(float, t)) for t in
-       re.findall(r"\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)", text)]
-seeded = open(case + "/constant/seededParcels").read()
-nParticle = float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
+from checks import seeded_parcels
+pts, nParticle = seeded_parcels(case)
 import checks
 from checks import report as check
 cells = {}
