@@ -5,7 +5,7 @@ Reads OpenFOAM output directly (lagrangian fields, postProcessing tables,
 logs) and compares with hand-derived references or between runs. Each
 check prints one line per comparison and the script exits 1 on any failure.
 
-A test script's own Python imports it for the same lines (report, close)
+A test script's own Python imports it for the same lines (report)
 and its exit status (status()): one pass/fail helper for every test.
 
 Usage:
@@ -33,14 +33,6 @@ def report(ok, what):
     print(("PASS " if ok else "FAIL ") + what)
     if not ok:
         failures += 1
-
-
-def close(value, reference, rel_tol, what):
-    """|value - reference| <= rel_tol*|reference|, reported with both."""
-    ok = abs(value - reference) <= rel_tol*abs(reference)
-    report(ok, "%s: %.6g against %.6g (relative tolerance %g)"
-           % (what, value, reference, rel_tol))
-    return ok
 
 
 def status():
