@@ -19,7 +19,10 @@ Description
       bottom patch's area 1 m x 0.1 m = 0.1 m2, or crossSection 0.05 m2;
     - bad input: unknown patch, lowerPatch == upperPatch, rhoInf <= 0,
       missing rhoInf, crossSection <= 0 all raise FatalIOError naming the
-      keyword.
+      keyword; so does rhoInf 1.5 with a kinematic p while the gas density
+      field rho.air = 1.2 is registered (it would report 1.5/1.2 = 1.25
+      times the pressure drop), and rhoInf 1.2 beside it is accepted
+      (deltaP = 96 Pa).
 
 \*---------------------------------------------------------------------------*/
 
@@ -129,6 +132,22 @@ int main(int argc, char *argv[])
         dict.set("rho", "rho.air");
         functionObjects::bedPressureDrop withField("dpRho", runTime, dict);
         checkClose("kinematic p, rho field 1.2: deltaP [Pa]", withField.deltaP(), 96);
+
+        checkTrue
+        (
+            "rhoInf 1.5 beside the gas density field rho.air 1.2 rejected",
+            rejects(runTime, settings("bottom", "top"), "rhoInf")
+        );
+
+        dict = settings("bottom", "top");
+        dict.set("rhoInf", 1.2);
+        functionObjects::bedPressureDrop agreeing("dpAgree", runTime, dict);
+        checkClose
+        (
+            "kinematic p, rhoInf 1.2 = rho.air: deltaP [Pa]",
+            agreeing.deltaP(),
+            96
+        );
     }
 
     {
@@ -162,6 +181,7 @@ int main(int argc, char *argv[])
         checkTrue("missing rhoInf rejected", rejects(runTime, dict, "rhoInf"));
 
         dict = settings("bottom", "top");
+        dict.set("rhoInf", 1.2);
         dict.add("crossSection", -0.05);
         checkTrue
         (
@@ -216,6 +236,7 @@ int main(int argc, char *argv[])
             1000*2500*constant::mathematical::pi/6*1e-9;
 
         dictionary dict(settings("bottom", "top"));
+        dict.set("rhoInf", 1.2);
         dict.add("cloud", "kinematicCloud");
         functionObjects::bedPressureDrop fo("dpCloud", runTime, dict);
         checkClose

@@ -62,6 +62,50 @@ Foam::scalar Foam::functionObjects::bedPressureDrop::patchMeanDensity
 }
 
 
+void Foam::functionObjects::bedPressureDrop::checkRhoInf
+(
+    const dictionary& dict
+) const
+{
+    // Before the solver's fields exist (e.g. a function object constructed
+    // on its own) there is nothing to compare with
+    const volScalarField* pPtr = findObject<volScalarField>(pName_);
+    if (!pPtr || pPtr->dimensions() == dimPressure)
+    {
+        return;
+    }
+
+    const HashTable<const volScalarField*> fields
+    (
+        mesh_.lookupClass<volScalarField>()
+    );
+    forAllConstIters(fields, iter)
+    {
+        const volScalarField& rho = *iter();
+        if (rho.dimensions() != dimDensity)
+        {
+            continue;
+        }
+        const scalar rhoMin = gMin(rho.primitiveField());
+        const scalar rhoMax = gMax(rho.primitiveField());
+        if
+        (
+            rhoMax - rhoMin <= 1e-12*rhoMax
+         && mag(rhoInf_ - rhoMax) > 1e-6*rhoMax
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "Dictionary " << dict.name() << ", keyword rhoInf: value "
+                << rhoInf_ << " differs from the gas density field "
+                << rho.name() << " (" << rhoMax << " kg/m3) that the "
+                << "kinematic pressure " << pName_ << " is converted to Pa with;"
+                << " it must equal it (to 1e-6), or set rho " << rho.name()
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
 Foam::scalar Foam::functionObjects::bedPressureDrop::patchMeanPressure
 (
     const label patchi
@@ -160,6 +204,8 @@ bool Foam::functionObjects::bedPressureDrop::read(const dictionary& dict)
                 << rhoInf_ << " out of range; it must be > 0 [kg/m3]"
                 << exit(FatalIOError);
         }
+
+        checkRhoInf(dict);
     }
 
     cloudName_ = dict.lookupOrDefault<word>("cloud", word::null);
