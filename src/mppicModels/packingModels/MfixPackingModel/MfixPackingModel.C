@@ -30,7 +30,8 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     cellUMean_(),
     coupledValues_(),
     coupledUMean_(),
-    cellAddedMomentum_()
+    cellAddedMomentum_(),
+    addedMomentumStep_(-1)
 {}
 
 
@@ -50,7 +51,8 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     cellUMean_(),
     coupledValues_(),
     coupledUMean_(),
-    cellAddedMomentum_()
+    cellAddedMomentum_(),
+    addedMomentumStep_(-1)
 {}
 
 
@@ -286,8 +288,24 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheFields
     // cells across processor faces), before any parcel asks for it
     cellNeighbours_ = &coupledCellNeighbours::New(mesh);
 
-    cellAddedMomentum_.setSize(mesh.nCells());
-    cellAddedMomentum_ = Zero;
+    // Reset at the first (sub-)step of a gas step; the solids sub-steps
+    // (subCycleTime) share the gas step's index in prevTimeState()
+    const Time& runTime = mesh.time();
+    const label gasStep =
+        runTime.subCycling()
+      ? runTime.prevTimeState().timeIndex()
+      : runTime.timeIndex();
+
+    if
+    (
+        gasStep != addedMomentumStep_
+     || cellAddedMomentum_.size() != mesh.nCells()
+    )
+    {
+        cellAddedMomentum_.setSize(mesh.nCells());
+        cellAddedMomentum_ = Zero;
+        addedMomentumStep_ = gasStep;
+    }
 
     volumeAverage_ =
         &mesh.lookupObject<AveragingMethod<scalar>>(cloudName + ":volumeAverage");
