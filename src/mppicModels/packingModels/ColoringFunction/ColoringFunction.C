@@ -211,10 +211,22 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
             );
         }
 
-        // End of the packing step: the packs take their impulses back
+        // End of the packing step: the packs take their impulses back; a
+        // held pack hands the part down along gravity to its support
         if (conserveMomentum_)
         {
-            this->applyReactions(reactions_);
+            this->applyReactions
+            (
+                reactions_,
+                [this]
+                (
+                    const typename CloudType::parcelType& p,
+                    const vector& U
+                )
+                {
+                    return limit_.settledVelocity(p, U);
+                }
+            );
         }
 
         // Where each parcel now is

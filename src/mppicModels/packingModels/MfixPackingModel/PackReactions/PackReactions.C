@@ -24,10 +24,11 @@ void Foam::PackReactions<CloudType>::record
 
 
 template<class CloudType>
-template<class Report>
+template<class Settle, class Report>
 void Foam::PackReactions<CloudType>::apply
 (
     CloudType& cloud,
+    const Settle& settle,
     const Report& report
 )
 {
@@ -137,8 +138,9 @@ void Foam::PackReactions<CloudType>::apply
 
             if (here && cells.toLocal(pack) == p.cell())
             {
-                p.U() += dU;
-                report(p, dU);
+                const vector U = settle(p, p.U() + dU);
+                report(p, U - p.U());
+                p.U() = U;
                 continue;
             }
         }
@@ -148,8 +150,9 @@ void Foam::PackReactions<CloudType>::apply
         {
             dU -= kept[celli]*packImpulse[celli]/packMass[celli];
         }
-        p.U() += dU;
-        report(p, dU);
+        const vector U = settle(p, p.U() + dU);
+        report(p, U - p.U());
+        p.U() = U;
     }
 
     turned_.clear();
