@@ -29,6 +29,11 @@ Usage:
         [--check] [--row] [--tableHead]
     minimumFluidizationResults.py --overlay CASE:LABEL ... [--out PNG]
         [--title T]   (several runs on one plot: the sensitivity plots)
+    minimumFluidizationResults.py --split T0 T1 [--case DIR]
+        where the bed's weight goes over [T0, T1] s: the gas (the mean dP*),
+        the packing step's mean upward force over m g (packingMonitor) and
+        the rest of the cloud's vertical momentum budget, the walls' and the
+        distributor's (mppicPost.packing_force, weight_rest)
 """
 import argparse
 import math
@@ -58,9 +63,16 @@ def bed(case):
     cloud = os.path.join(case, "constant", "kinematicCloudProperties")
     transport = os.path.join(case, "constant", "transportProperties")
     rho_g = post.dict_number(transport, "rho.air")
+    close_pack = post.dict_number(cloud, "closePackFraction")
+    # Ergun's voidage is the bed's: the seeded solids fraction (Allrun
+    # -seedFraction; the close pack unless set)
+    seeds = os.path.join(case, "system", "mppicSeedParcelsDict")
+    seeded = (post.dict_number(seeds, "solidsFraction")
+              if os.path.exists(seeds) else None)
     return {
         "rho_p": post.dict_number(cloud, "rho0"),
-        "alpha": post.dict_number(cloud, "closePackFraction"),
+        "alpha": seeded if seeded is not None else close_pack,
+        "closePack": close_pack,
         "switch": post.dict_number(cloud, "switchFraction"),
         "d": particle_diameter(case),
         "rho_g": rho_g,
@@ -167,15 +179,16 @@ def summary(case):
 
 def report(res, label):
     b = res["bed"]
-    print("%s: ramp 0-%g m/s over %g s, close pack %g (voidage %g), drag %s"
-          % (label, b["rampVelocity"], b["rampTime"], b["alpha"],
+    print("%s: ramp 0-%g m/s over %g s, close pack %g, bed seeded at %g "
+          "(voidage %g), drag %s"
+          % (label, b["rampVelocity"], b["rampTime"], b["closePack"], b["alpha"],
              1 - b["alpha"], "Wen-Yu" if b["switch"] < 0.1 else "Ergun/Wen-Yu"))
     print("  Umf of Ergun for this voidage %.4f m/s, of Wen-Yu %.4f m/s"
           % (res["ergunUmf"], res["wenYuUmf"]))
     if "umf" not in res:
         print("  no transition found")
         return
-    print("  Umf (fits crossing) %.4f m/s: %+.1f %% from the measured 0.182"
+    print("  Umf (fits crossing) %.4f m/s: %+.1f %% from NETL's 0.182 (HDPE)"
           % (res["umf"], 100*(res["umf"]/MEASURED_UMF - 1)))
     print("  plateau dP* %.4f" % res["plateau"])
     if res.get("departure"):
@@ -261,6 +274,21 @@ def plot_overlay(runs, path, title):
     print("  wrote " + path)
 
 
+def weight_split(case, t0, t1):
+    """(gas, packing step, walls) shares of the weight over [t0, t1] s."""
+    rows = [r for r in post.function_object_table(case, "bedPressureDrop")
+            if t0 - 1e-9 <= r[0] <= t1 + 1e-9]
+    monitor = post.function_object_table(case, "packingMonitor")
+    window = [r for r in monitor if t0 - 1e-9 <= r[0] <= t1 + 1e-9]
+    if not rows or len(window) < 2:
+        return None
+    mass = monitor[0][post.MONITOR_MASS]
+    gas = sum((r[3] - r[4])/r[5] for r in rows)/len(rows)
+    packing = post.packing_force(window, mass, G)
+    walls = post.weight_rest(case, t0, t1, gas + packing, mass, G)
+    return gas, packing, walls
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--case", default=".")
@@ -272,7 +300,20 @@ def main():
                         help="plot these runs' curves on one plot (--out)")
     parser.add_argument("--out", default="minimumFluidization_overlay.png")
     parser.add_argument("--title", default="minimum fluidization")
+    parser.add_argument("--split", nargs=2, type=float, metavar=("T0", "T1"))
     args = parser.parse_args()
+    if args.split:
+        split = weight_split(args.case, *args.split)
+        if split is None:
+            print("no bedPressureDrop or packingMonitor rows in %g-%g s"
+                  % tuple(args.split))
+            return 1
+        gas, packing, walls = split
+        print("%g-%g s: the gas (dP*) %.3f, the packing step %.3f, the walls "
+              "and distributor %s of the weight"
+              % (args.split[0], args.split[1], gas, packing,
+                 "%.3f" % walls if walls is not None else "- (no two written clouds)"))
+        return 0
     if args.overlay:
         runs = [tuple(item.split(":", 1)) for item in args.overlay]
         plot_overlay(runs, args.out, args.title)
