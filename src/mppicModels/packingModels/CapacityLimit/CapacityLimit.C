@@ -19,7 +19,8 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
     holdSupportedPacks_(holdSupportedPacks),
     overfill_(readOverfill(coeffs)),
     entries_(),
-    support_(mesh, coeffs)
+    support_(mesh, coeffs),
+    resting_()
 {}
 
 
@@ -32,7 +33,8 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
     holdSupportedPacks_(cl.holdSupportedPacks_),
     overfill_(cl.overfill_),
     entries_(),
-    support_(cl.support_)
+    support_(cl.support_),
+    resting_()
 {}
 
 
@@ -129,6 +131,9 @@ void Foam::CapacityLimit<CloudType>::startStep
 
     support_.update(cloud.g().value(), fullCells(cloud, closePackFraction));
 
+    resting_.setSize(cloud.mesh().nCells());
+    resting_ = false;
+
     if (Pstream::parRun())
     {
         boolList heldCells(cloud.mesh().nCells());
@@ -175,7 +180,20 @@ Foam::vector Foam::CapacityLimit<CloudType>::move
         )
     )
     {
-        kept = support_.heldVelocity(p.U(), kept);
+        const vector held = support_.heldVelocity(p.U(), kept);
+
+        // The support stopped a fall: the cell rests on it this step
+        const label celli = entries_.finalCell(p);
+        if
+        (
+            magSqr(held - kept) > 0
+         && celli >= 0
+         && celli < resting_.size()
+        )
+        {
+            resting_[celli] = true;
+        }
+        kept = held;
     }
 
     return dX;
