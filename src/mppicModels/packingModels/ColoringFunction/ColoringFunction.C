@@ -212,7 +212,8 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
         }
 
         // End of the packing step: the packs take their impulses back; a
-        // held pack hands the part down along gravity to its support
+        // held pack whose fall the support stopped in this step hands the
+        // part down along gravity to it (CapacityLimit::settledVelocity)
         if (conserveMomentum_)
         {
             this->applyReactions
