@@ -3,6 +3,9 @@
 
 Usage:
     sedimentationResults.py [--case DIR] [--label NAME] [--check] [--plot]
+    sedimentationResults.py --tableHead
+    sedimentationResults.py [--case DIR] --row [--label NAME] [--wallTime S]
+                            [--failure TEXT]     (bin/compareSolvers)
 
 Reads
   postProcessing/packingMonitor/0/packingMonitor.dat   (every step)
@@ -84,6 +87,44 @@ def surface_height(ys, profile, level, dy):
     return ys[top] + (a0 - level)/(a0 - a1)*dy
 
 
+TABLE_HEAD = ("| packing model | max alpha_s (averaged) | max alpha_s (cell) | "
+              "bound | min eps_g | bed H [m] | H error | bounds met | "
+              "wall time [s] | failed |\n"
+              "|---|---|---|---|---|---|---|---|---|---|")
+
+
+def summary(case, width, depth):
+    """The bounds and the bed height of the run in case (module doc)."""
+    close_pack, rows = read_monitor(case)
+    time = post.latest_time(case)
+    ys, profile, dy, xinfo, zinfo = bed_profile(case, time)
+    area = width*depth
+    cell_volume = area/(xinfo[0]*zinfo[0])*dy
+    solids = seeded_solids_volume(case)
+    parcel_fraction = solids/rows[-1][1]/cell_volume
+    res = dict(close_pack=close_pack, rows=rows, time=time, ys=ys,
+               profile=profile, parcel_fraction=parcel_fraction,
+               max_avg=max(r[3] for r in rows),
+               max_cell=max(r[4] for r in rows),
+               min_gas=min(r[6] for r in rows),
+               height=surface_height(ys, profile, 0.5*close_pack, dy),
+               expected=solids/(close_pack*area))
+    res["height_error"] = (res["height"] - res["expected"])/res["expected"]
+    res["bound"] = max(1.03*close_pack, close_pack + parcel_fraction)
+    res["ok"] = dict(pack=res["max_avg"] <= res["bound"] + 1e-12,
+                     gas=res["min_gas"] >= 0,
+                     height=abs(res["height_error"]) <= 0.03)
+    return res
+
+
+def table_row(res, label, wall, failure):
+    return "| %s | %.4f | %.4f | %.4f | %.4f | %.4f | %.1f %% | %s | %s | %s |" % (
+        label, res["max_avg"], res["max_cell"], res["bound"], res["min_gas"],
+        res["height"], 100*res["height_error"],
+        "yes" if all(res["ok"].values()) else "no",
+        "%.0f" % wall if wall else "-", failure or "no")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--case", default=".")
@@ -92,40 +133,36 @@ def main():
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--width", type=float, default=0.05)
     parser.add_argument("--depth", type=float, default=0.005)
+    parser.add_argument("--tableHead", action="store_true")
+    parser.add_argument("--row", action="store_true")
+    parser.add_argument("--wallTime", type=float, default=None)
+    parser.add_argument("--failure", default="")
     args = parser.parse_args()
+    if args.tableHead:
+        print(TABLE_HEAD)
+        return 0
 
-    close_pack, rows = read_monitor(args.case)
-    max_avg = max(r[3] for r in rows)
-    max_cell = max(r[4] for r in rows)
-    min_gas = min(r[6] for r in rows)
-
-    time = post.latest_time(args.case)
-    ys, profile, dy, xinfo, zinfo = bed_profile(args.case, time)
-    area = args.width*args.depth
-    cell_volume = area/(xinfo[0]*zinfo[0])*dy
-    solids = seeded_solids_volume(args.case)
-    n_parcels = rows[-1][1]
-    parcel_fraction = solids/n_parcels/cell_volume
-
-    height = surface_height(ys, profile, 0.5*close_pack, dy)
-    expected = solids/(close_pack*area)
-    height_error = (height - expected)/expected
-
-    bound = max(1.03*close_pack, close_pack + parcel_fraction)
-    ok_pack = max_avg <= bound + 1e-12
-    ok_gas = min_gas >= 0
-    ok_height = abs(height_error) <= 0.03
+    res = summary(args.case, args.width, args.depth)
+    if args.row:
+        print(table_row(res, args.label, args.wallTime, args.failure))
+        return 0
+    close_pack, rows, ys, profile = (res["close_pack"], res["rows"],
+                                     res["ys"], res["profile"])
+    bound, height, expected = res["bound"], res["height"], res["expected"]
+    ok = res["ok"]
 
     print("%-18s %10s %10s %10s %10s %10s %9s" % (
         "packing model", "max as av", "max as cell", "bound", "min eps_g",
         "bed H [m]", "H error"))
     print("%-18s %10.4f %10.4f %10.4f %10.4f %10.4f %8.1f%%" % (
-        args.label, max_avg, max_cell, bound, min_gas, height, 100*height_error))
+        args.label, res["max_avg"], res["max_cell"], bound, res["min_gas"],
+        height, 100*res["height_error"]))
     print("close pack %.3f, one parcel = %.4f of a cell, inventory height %.4f m,"
-          " final time %s" % (close_pack, parcel_fraction, expected, time))
+          " final time %s" % (close_pack, res["parcel_fraction"], expected,
+                              res["time"]))
     print("bounds: max alpha_s %s, gas fraction %s, bed height %s" % (
-        "met" if ok_pack else "NOT met", "met" if ok_gas else "NOT met",
-        "met" if ok_height else "NOT met"))
+        "met" if ok["pack"] else "NOT met", "met" if ok["gas"] else "NOT met",
+        "met" if ok["height"] else "NOT met"))
 
     if args.plot:
         import matplotlib
@@ -153,7 +190,7 @@ def main():
         fig.savefig(os.path.join(args.case, "sedimentation_%s.png" % args.label),
                     dpi=100)
 
-    if args.check and not (ok_pack and ok_gas and ok_height):
+    if args.check and not all(ok.values()):
         return 1
     return 0
 

@@ -33,6 +33,8 @@ voidage factor of eq 7,  u_r(eg) = g*(rho_p - rho_g)*d^2/(18*mu)*eg^3.65:
   eq 6 itself, the state eq 6 assumes from t = 0;
 and MFiX-PIC's fronts (the seed's tables 3 and 4).
 --hindered-velocity ES0 prints eg0*u_r(eg0) [m/s] (Allrun's start velocity).
+--tableHead, --row [--label L --wallTime S --failure TEXT]: bin/compareSolvers's
+header and the run's two rows (settling, filling).
 Prints the table row; --check: exit 1 unless both fronts are within the
 tolerance of the reference: --reference exact (default: settling from the start,
 filling with the bed at rest, tolerance 0.005 m by default) or seed (eqs 6
@@ -107,6 +109,42 @@ def crossing(ys, profile, level, from_top):
     return float("nan")
 
 
+def summary(case, time):
+    """The fronts of the run in case at time, with their references."""
+    es0, y0 = seeding(case)
+    ys, profile = layer_profile(case, time)
+    v0 = start_velocity(case)
+    return dict(es0=es0, ys=ys, profile=profile, v0=v0,
+                settling=crossing(ys, profile, es0/2, from_top=True),
+                filling=crossing(ys, profile, (CLOSE_PACK + es0)/2,
+                                 from_top=False),
+                refs=references(es0, y0, float(time), v0),
+                mfix=MFIX_PIC.get(round(es0, 2), (float("nan"), float("nan"))))
+
+
+TABLE_HEAD = ("| run | front | ours [m] | eq 6/8 [m] | ours - eq 6/8 | "
+              "exact [m] | ours - exact | MFiX-PIC [m] | max layer eps_s | "
+              "wall time [s] | failed |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|")
+
+
+def table_rows(res, label, wall, failure):
+    """Two rows (settling, filling) of TABLE_HEAD; exact: from the start for
+    the settling front, the bed at rest for the filling front."""
+    refs, mfix = res["refs"], res["mfix"]
+    rows = []
+    for name, ours, ref, exact, theirs in (
+            ("settling", res["settling"], refs[0], refs[3], mfix[0]),
+            ("filling", res["filling"], refs[1], refs[2], mfix[1])):
+        rows.append("| %s | %s | %.4f | %.4f | %+.4f | %.4f | %+.4f | %.3f | "
+                    "%.3f | %s | %s |" % (
+                        label or "%.2f" % res["es0"], name, ours, ref,
+                        ours - ref, exact, ours - exact, theirs,
+                        max(res["profile"]), "%.0f" % wall if wall else "-",
+                        failure or "no"))
+    return "\n".join(rows)
+
+
 def plot(ys, profile, es0, fronts, refs, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -150,7 +188,15 @@ def main():
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--hindered-velocity", type=float, metavar="ES0")
+    parser.add_argument("--tableHead", action="store_true")
+    parser.add_argument("--row", action="store_true")
+    parser.add_argument("--label", default=None)
+    parser.add_argument("--wallTime", type=float, default=None)
+    parser.add_argument("--failure", default="")
     args = parser.parse_args()
+    if args.tableHead:
+        print(TABLE_HEAD)
+        return 0
     if args.hindered_velocity is not None:
         es0 = args.hindered_velocity
         if not 0 < es0 < CLOSE_PACK:
@@ -160,16 +206,15 @@ def main():
         print("%.6g" % ((1 - es0)*slip(1 - es0)))
         return 0
 
-    es0, y0 = seeding(args.case)
-    t = float(args.time)
-    ys, profile = layer_profile(args.case, args.time)
-    settling = crossing(ys, profile, es0/2, from_top=True)
-    filling = crossing(ys, profile, (CLOSE_PACK + es0)/2, from_top=False)
-    v0 = start_velocity(args.case)
-    refs = references(es0, y0, t, v0)
-    mfix = MFIX_PIC.get(round(es0, 2), (float("nan"), float("nan")))
+    res = summary(args.case, args.time)
+    if args.row:
+        print(table_rows(res, args.label, args.wallTime, args.failure))
+        return 0
+    es0, ys, profile = res["es0"], res["ys"], res["profile"]
+    settling, filling, refs = res["settling"], res["filling"], res["refs"]
+    mfix = res["mfix"]
 
-    print("start velocity of the parcels %+.4f m/s" % v0)
+    print("start velocity of the parcels %+.4f m/s" % res["v0"])
     print("eps_s0 | front | ours [m] | eqs 6/8 [m] | ours - ref [m] | "
           "from the start / bed at rest [m] | ours - that [m] | "
           "MFiX-PIC [m]")
