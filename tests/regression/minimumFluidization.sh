@@ -22,22 +22,29 @@
 # keeps Ergun's drop (before 2026-11-26 its parcels kept that velocity and
 # the drag of their fall raised dP*: measured 1.6-1.9 x Ergun on Kuipers'
 # beads, issue 21; FAIL here with that library).
+# And mfixSnider with conserveMomentum true, which shares that rule (before
+# 2026-11-26 it did not: 1.97 x Ergun at 0.06 m/s, FAIL here).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: minimumFluidization.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 status=0
-for conserve in false true
+for run in coloringFunction:false coloringFunction:true mfixSnider:true
 do
-    case="$runDir/conserveMomentum-$conserve"
+    packing=${run%:*}
+    conserve=${run#*:}
+    case="$runDir/$packing-conserveMomentum-$conserve"
     copyTutorial validation/minimumFluidization "$case"
+    # both models' entries
     sed -i "s/^\( *conserveMomentum \+\)[a-z]\+;/\1$conserve;/" \
         "$case/constant/kinematicCloudProperties"
-    grep -q "conserveMomentum $conserve;" "$case/constant/kinematicCloudProperties" \
+    [ "$(grep -c "^ *conserveMomentum $conserve;" \
+        "$case/constant/kinematicCloudProperties")" = 2 ] \
         || { echo "FAIL conserveMomentum $conserve not set"; exit 1; }
-    runAllrun "$case" -ramp 0.6 0.12 -parcelsPerCell 10 || exit 1
+    runAllrun "$case" -packing $packing -ramp 0.6 0.12 -parcelsPerCell 10 \
+        || exit 1
 
-    echo "conserveMomentum $conserve:"
+    echo "$packing, conserveMomentum $conserve:"
     (cd "$case" && /usr/bin/python3 - <<'PY'
 import sys
 sys.path.insert(0, ".")

@@ -216,18 +216,7 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
         // part down along gravity to it (CapacityLimit::settledVelocity)
         if (conserveMomentum_)
         {
-            this->applyReactions
-            (
-                reactions_,
-                [this]
-                (
-                    const typename CloudType::parcelType& p,
-                    const vector& U
-                )
-                {
-                    return limit_.settledVelocity(p, U);
-                }
-            );
+            this->applyReactions(reactions_, limit_);
         }
 
         // Where each parcel now is

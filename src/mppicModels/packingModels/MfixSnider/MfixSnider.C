@@ -249,10 +249,14 @@ void Foam::PackingModels::MfixSnider<CloudType>::cacheFields(const bool store)
     if (!store)
     {
         // The packs take the opposite of the impulses they gave, before
-        // the mean of the final velocities is taken
+        // the mean of the final velocities is taken; a held pack whose fall
+        // the support stopped in this step hands the part down along
+        // gravity to it (CapacityLimit::settledVelocity; before 2026-11-26
+        // its parcels kept it, and the drag of that fall raised a fixed
+        // bed's pressure drop to 2 x Ergun's)
         if (conserveMomentum_)
         {
-            this->applyReactions(reactions_);
+            this->applyReactions(reactions_, limit_);
         }
         storeMeanVelocity();
         previousMeanVelocity_ = nullptr;
