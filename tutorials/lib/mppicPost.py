@@ -258,8 +258,12 @@ def weight_rest(case, t0, t1, carried, mass, g=9.81):
     d(P_y)/dt/(M g) + 1 - carried, with P_y the cloud's vertical momentum
     at the written times nearest t0 and t1 and carried the gas's and the
     packing step's shares together. Without wall friction it is the walls'
-    rebounds (a distributor's). None without two written clouds."""
-    times = [name for _, name in time_dirs(case)]
+    rebounds (a distributor's). None without two written clouds. (A
+    solids-sub-cycled run also leaves time folders holding only uniform/:
+    only those with the cloud count.)"""
+    times = [name for _, name in time_dirs(case)
+             if os.path.isdir(os.path.join(case, name, "lagrangian",
+                                           "kinematicCloud"))]
     if not times:
         return None
     a = min(times, key=lambda d: abs(float(d) - t0))
