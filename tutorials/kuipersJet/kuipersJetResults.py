@@ -340,15 +340,11 @@ def compare_runs(case, others, t0):
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--case", default=".")
-    parser.add_argument("--label", default="coloringFunction")
+    post.add_table_arguments(parser, "coloringFunction")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--tolerance", type=float, default=0.15)
     parser.add_argument("--from", dest="t0", type=float, default=None)
-    parser.add_argument("--row", action="store_true")
-    parser.add_argument("--wallTime", type=float, default=None)
-    parser.add_argument("--failure", default="")
-    parser.add_argument("--tableHead", action="store_true")
     parser.add_argument("--against", nargs="+", default=[])
     args = parser.parse_args()
     if args.tableHead:

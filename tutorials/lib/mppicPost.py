@@ -86,6 +86,17 @@ def function_object_table(case, name):
     return rows
 
 
+def add_table_arguments(parser, label):
+    """The options by which bin/compareSolvers asks a results script for its
+    table: --tableHead (print the head), --row (print the run's row) with
+    --label (default label), --wallTime S and --failure TEXT."""
+    parser.add_argument("--label", default=label)
+    parser.add_argument("--tableHead", action="store_true")
+    parser.add_argument("--row", action="store_true")
+    parser.add_argument("--wallTime", type=float, default=None)
+    parser.add_argument("--failure", default="")
+
+
 def control_entry(case, key):
     """A top-level entry of system/controlDict, as text (None if absent)."""
     text = open(os.path.join(case, "system", "controlDict")).read()

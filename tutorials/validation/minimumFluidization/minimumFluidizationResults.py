@@ -292,10 +292,8 @@ def weight_split(case, t0, t1):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--case", default=".")
-    parser.add_argument("--label", default="run")
+    post.add_table_arguments(parser, "run")
     parser.add_argument("--plot", action="store_true")
-    parser.add_argument("--row", action="store_true")
-    parser.add_argument("--tableHead", action="store_true")
     parser.add_argument("--overlay", nargs="+", metavar="CASE:LABEL",
                         help="plot these runs' curves on one plot (--out)")
     parser.add_argument("--out", default="minimumFluidization_overlay.png")

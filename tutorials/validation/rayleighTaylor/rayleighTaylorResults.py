@@ -137,10 +137,8 @@ def plot(res, case, label):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--case", default=".")
-    parser.add_argument("--label", default="run")
+    post.add_table_arguments(parser, "run")
     parser.add_argument("--plot", action="store_true")
-    parser.add_argument("--row", action="store_true")
-    parser.add_argument("--tableHead", action="store_true")
     args = parser.parse_args()
     if args.tableHead:
         print(TABLE_HEAD)

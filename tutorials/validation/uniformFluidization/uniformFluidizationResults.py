@@ -162,12 +162,8 @@ def main():
     parser.add_argument("--case", default=".")
     parser.add_argument("--from", dest="t0", type=float, default=None,
                         help="start of the window (default 0.4 x the run's end)")
-    parser.add_argument("--label", default="run")
-    parser.add_argument("--row", action="store_true")
+    post.add_table_arguments(parser, "run")
     parser.add_argument("--plot", action="store_true")
-    parser.add_argument("--tableHead", action="store_true")
-    parser.add_argument("--wallTime", type=float, default=None)
-    parser.add_argument("--failure", default="")
     parser.add_argument("--largest", nargs="+", metavar="DIR:LABEL")
     args = parser.parse_args()
     if args.largest:

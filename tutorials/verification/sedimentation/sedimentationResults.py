@@ -128,15 +128,11 @@ def table_row(res, label, wall, failure):
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--case", default=".")
-    parser.add_argument("--label", default="coloringFunction")
+    post.add_table_arguments(parser, "coloringFunction")
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--width", type=float, default=0.05)
     parser.add_argument("--depth", type=float, default=0.005)
-    parser.add_argument("--tableHead", action="store_true")
-    parser.add_argument("--row", action="store_true")
-    parser.add_argument("--wallTime", type=float, default=None)
-    parser.add_argument("--failure", default="")
     args = parser.parse_args()
     if args.tableHead:
         print(TABLE_HEAD)

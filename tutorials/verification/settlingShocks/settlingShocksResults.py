@@ -188,11 +188,7 @@ def main():
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--hindered-velocity", type=float, metavar="ES0")
-    parser.add_argument("--tableHead", action="store_true")
-    parser.add_argument("--row", action="store_true")
-    parser.add_argument("--label", default=None)
-    parser.add_argument("--wallTime", type=float, default=None)
-    parser.add_argument("--failure", default="")
+    post.add_table_arguments(parser, None)
     args = parser.parse_args()
     if args.tableHead:
         print(TABLE_HEAD)
