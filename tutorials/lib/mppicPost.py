@@ -264,7 +264,7 @@ def cloud_momentum(case, time, cloud="kinematicCloud"):
                for n, rho, dia, u in zip(*fields))
 
 
-def weight_rest(case, t0, t1, carried, mass, g=9.81):
+def weight_rest(case, t0, t1, carried, mass, g=9.81, cloud="kinematicCloud"):
     """What the gas and the packing step do not carry, over the weight:
     d(P_y)/dt/(M g) + 1 - carried, with P_y the cloud's vertical momentum
     at the written times nearest t0 and t1 and carried the gas's and the
@@ -273,15 +273,14 @@ def weight_rest(case, t0, t1, carried, mass, g=9.81):
     solids-sub-cycled run also leaves time folders holding only uniform/:
     only those with the cloud count.)"""
     times = [name for _, name in time_dirs(case)
-             if os.path.isdir(os.path.join(case, name, "lagrangian",
-                                           "kinematicCloud"))]
+             if os.path.isdir(os.path.join(case, name, "lagrangian", cloud))]
     if not times:
         return None
     a = min(times, key=lambda d: abs(float(d) - t0))
     b = min(times, key=lambda d: abs(float(d) - t1))
     if a == b:
         return None
-    pa, pb = cloud_momentum(case, a), cloud_momentum(case, b)
+    pa, pb = cloud_momentum(case, a, cloud), cloud_momentum(case, b, cloud)
     if pa is None or pb is None:
         return None
     return (pb - pa)/(float(b) - float(a))/(mass*g) + 1 - carried
