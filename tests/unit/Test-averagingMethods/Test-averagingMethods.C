@@ -5,7 +5,8 @@ Application
     Test-averagingMethods
 
 Description
-    The averaging methods linearHat and diffusion and the linearHat
+    The averaging methods linearHat, cornerNodes (cornerNodesChecks.C) and
+    diffusion (diffusionChecks.C) and the linearHat
     interpolation of libmppicModels, selected by name through OpenFOAM's
     run-time tables as the MPPIC cloud selects them, on two meshes:
     - region "periodic": a 1 m cube of 10 x 10 x 10 cells of 0.1 m (centres
@@ -256,6 +257,9 @@ void boundaryInterpolation(const fvMesh& box)
 void diffusionSpreading(const fvMesh& cube, const fvMesh& box);
 void badCoefficients(const fvMesh& cube);
 
+// (cornerNodesChecks.C)
+void cornerNodesChecks(const fvMesh& cube, const fvMesh& box);
+
 
 // * * * * * * * * * * * * * * * * * * Main * * * * * * * * * * * * * * * * //
 
@@ -278,6 +282,7 @@ int main(int argc, char *argv[])
     boundaryInterpolation(mesh);
     diffusionSpreading(cube, mesh);
     badCoefficients(cube);
+    cornerNodesChecks(cube, mesh);
 
     return summary();
 }

@@ -17,12 +17,26 @@ Foam::AveragingMethods::LinearHat<Type>::LinearHat
     const fvMesh& mesh
 )
 :
+    LinearHat<Type>(io, dict, mesh, false)
+{}
+
+
+template<class Type>
+Foam::AveragingMethods::LinearHat<Type>::LinearHat
+(
+    const IOobject& io,
+    const dictionary& dict,
+    const fvMesh& mesh,
+    const bool cornerNodes
+)
+:
     AveragingMethod<Type>(io, dict, mesh, labelList(1, mesh.nCells())),
     kernel_(linearHatKernel::New(mesh)),
     data_(FieldField<Field, Type>::operator[](0)),
     dataGrad_(mesh.nCells()),
     ghostDeposits_(kernel_.nGhosts(), Zero),
-    ghostValues_(kernel_.nGhosts(), Zero)
+    ghostValues_(kernel_.nGhosts(), Zero),
+    cornerNodes_(cornerNodes)
 {}
 
 
@@ -37,7 +51,8 @@ Foam::AveragingMethods::LinearHat<Type>::LinearHat
     data_(FieldField<Field, Type>::operator[](0)),
     dataGrad_(am.dataGrad_),
     ghostDeposits_(am.ghostDeposits_),
-    ghostValues_(am.ghostValues_)
+    ghostValues_(am.ghostValues_),
+    cornerNodes_(am.cornerNodes_)
 {}
 
 
@@ -79,14 +94,18 @@ void Foam::AveragingMethods::LinearHat<Type>::add
     const Type& value
 )
 {
-    kernel_.deposit
-    (
-        data_,
-        ghostDeposits_,
-        position(coordinates, tetIs),
-        tetIs.cell(),
-        value
-    );
+    const point x = position(coordinates, tetIs);
+    if (cornerNodes_)
+    {
+        kernel_.template deposit<Type, linearHatKernel::cornerNodeWeights>
+        (
+            data_, ghostDeposits_, x, tetIs.cell(), value
+        );
+    }
+    else
+    {
+        kernel_.deposit(data_, ghostDeposits_, x, tetIs.cell(), value);
+    }
 }
 
 
@@ -97,13 +116,14 @@ Type Foam::AveragingMethods::LinearHat<Type>::interpolate
     const tetIndices& tetIs
 ) const
 {
-    return kernel_.interpolate
-    (
-        data_,
-        ghostValues_,
-        position(coordinates, tetIs),
-        tetIs.cell()
-    );
+    const point x = position(coordinates, tetIs);
+    return
+        cornerNodes_
+      ? kernel_.template interpolate<Type, linearHatKernel::cornerNodeWeights>
+        (
+            data_, ghostValues_, x, tetIs.cell()
+        )
+      : kernel_.interpolate(data_, ghostValues_, x, tetIs.cell());
 }
 
 

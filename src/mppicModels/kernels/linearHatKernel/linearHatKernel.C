@@ -178,6 +178,12 @@ void Foam::linearHatKernel::addHexCell
 
         towardFace_[facesPerCell*celli + j] =
             distance > VSMALL ? normals[j]/distance : vector::zero;
+
+        const scalar toPlane =
+            (mesh().faceCentres()[faces[j]] - mesh().cellCentres()[celli])
+          & normals[j];
+        towardOwnFace_[facesPerCell*celli + j] =
+            toPlane > VSMALL ? normals[j]/toPlane : vector::zero;
     }
 
     for (label entry = 0; entry < blockSize; ++entry)
@@ -250,6 +256,7 @@ void Foam::linearHatKernel::addOtherCell(const label celli)
     for (label j = 0; j < facesPerCell; ++j)
     {
         towardFace_[facesPerCell*celli + j] = Zero;
+        towardOwnFace_[facesPerCell*celli + j] = Zero;
     }
 }
 
@@ -261,6 +268,7 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
     MeshObject<fvMesh, GeometricMeshObject, linearHatKernel>(mesh),
     block_(blockSize*mesh.nCells()),
     towardFace_(facesPerCell*mesh.nCells()),
+    towardOwnFace_(facesPerCell*mesh.nCells()),
     hexahedral_(mesh.nCells(), true),
     neighbours_(coupledCellNeighbours::New(mesh)),
     halo_(mesh),
@@ -334,63 +342,6 @@ Foam::linearHatKernel::linearHatKernel(const fvMesh& mesh)
             Info<< "linearHatKernel: " << nStopped << " kernel block "
                 << "entries stop at the last cell known" << endl;
         }
-    }
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::linearHatKernel::evaluate
-(
-    const point& position,
-    const label celli,
-    weights& w
-) const
-{
-    const vector offset = position - mesh().cellCentres()[celli];
-    const label firstFace = facesPerCell*celli;
-
-    // Along each direction: the fraction t toward the chosen face and the
-    // block step to the cell across it
-    FixedList<scalar, 3> t;
-    FixedList<label, 3> step;
-    for (label i = 0; i < 3; ++i)
-    {
-        const scalar towardPlus = offset & towardFace_[firstFace + 2*i];
-        if (towardPlus > 0)
-        {
-            t[i] = min(towardPlus, scalar(1));
-            step[i] = blockStride[i];
-        }
-        else
-        {
-            const scalar towardMinus =
-                offset & towardFace_[firstFace + 2*i + 1];
-            t[i] = min(max(towardMinus, scalar(0)), scalar(1));
-            step[i] = -blockStride[i];
-        }
-    }
-
-    // Corner k takes the far side along direction i when bit i of k is set
-    const label firstEntry = blockSize*celli + blockCentre;
-    for (label k = 0; k < 8; ++k)
-    {
-        label entry = firstEntry;
-        scalar weight = 1;
-        for (label i = 0; i < 3; ++i)
-        {
-            if (k & (1 << i))
-            {
-                entry += step[i];
-                weight *= t[i];
-            }
-            else
-            {
-                weight *= 1 - t[i];
-            }
-        }
-        w.cells[k] = block_[entry];
-        w.values[k] = weight;
     }
 }
 

@@ -5,7 +5,7 @@
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-template<class Type>
+template<class Type, class Weights>
 Type Foam::linearHatKernel::interpolate
 (
     const UList<Type>& cellValues,
@@ -14,11 +14,11 @@ Type Foam::linearHatKernel::interpolate
     const label celli
 ) const
 {
-    weights w;
+    Weights w;
     evaluate(position, celli, w);
 
     Type sum = w.values[0]*value(cellValues, ghostValues, w.cells[0]);
-    for (label k = 1; k < 8; ++k)
+    for (label k = 1; k < w.values.size(); ++k)
     {
         sum += w.values[k]*value(cellValues, ghostValues, w.cells[k]);
     }
@@ -26,7 +26,7 @@ Type Foam::linearHatKernel::interpolate
 }
 
 
-template<class Type>
+template<class Type, class Weights>
 void Foam::linearHatKernel::deposit
 (
     UList<Type>& cellDensity,
@@ -36,12 +36,12 @@ void Foam::linearHatKernel::deposit
     const Type& value
 ) const
 {
-    weights w;
+    Weights w;
     evaluate(position, celli, w);
 
     const scalarField& V = mesh().V();
     const label nCells = V.size();
-    for (label k = 0; k < 8; ++k)
+    for (label k = 0; k < w.values.size(); ++k)
     {
         const label cellk = w.cells[k];
         if (cellk < nCells)
