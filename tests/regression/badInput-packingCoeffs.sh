@@ -1,7 +1,8 @@
 #!/bin/bash
 # badInput-packingCoeffs <runDir>: coloringFunction with e1 = 1.5, then
 # with impulse sideways -> FatalIOError naming the keyword and the allowed
-# range or names; coloringFunction and mfixSnider with overfill 1.5 ->
+# range or names; coloringFunction with randomVelocity 0.2 -> FatalIOError
+# naming it, 0.2 and [0, 0.1]; coloringFunction and mfixSnider with overfill 1.5 ->
 # FatalIOError naming overfill, 1.5 and [0, 1]; exit status 1, no crash
 # (mppicPimpleFoam).
 . "${0%/*}/badInputFunctions"
@@ -21,6 +22,13 @@ setEntry "$runDir/case" constant/kinematicCloudProperties \
 runBroken "$runDir/case" mppicPimpleFoam
 check fatal "$runDir/case/log.broken" $rc "sideways" "impulse" "neighbour"
 status=$?
+
+setEntry "$runDir/case" constant/kinematicCloudProperties \
+    subModels/coloringFunctionCoeffs \
+    "{ closePackFraction 0.6; randomVelocity 0.2; }"
+runBroken "$runDir/case" mppicPimpleFoam
+check fatal "$runDir/case/log.broken" $rc "randomVelocity" "0.2" "[0, 0.1]" \
+    || status=1
 
 # overfill outside [0, 1] (CapacityLimit), both models
 for model in coloringFunction mfixSnider

@@ -3,7 +3,7 @@
 # depositionConservation <runDir>
 # tutorials/verification/depositionConservation shortened to 2 periods
 # (0.5 s; about 6-15 s CPU each), once per conservative averagingMethod
-# (basic, linearHat, diffusion), the gas fraction deposited by it
+# (basic, linearHat, cornerNodes, diffusion), the gas fraction deposited by it
 # (solidsFractionFrom averaging): 480 parcels starting across the cyclic
 # faces of the periodic cube. (OpenFOAM's dual is not conservative here:
 # 1.7 % of the solids volume missing, see the case's README.)
@@ -14,7 +14,7 @@ runDir="${1:?usage: depositionConservation.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 status=0
-for method in basic linearHat diffusion
+for method in basic linearHat cornerNodes diffusion
 do
     copyTutorial verification/depositionConservation "$runDir/$method"
     setEntry "$runDir/$method" system/controlDict endTime 0.5

@@ -335,6 +335,7 @@ int main(int argc, char *argv[])
     testVelocityIntoBoundary(mesh);
     testDamping(cloud, mesh);
     testConserveMomentum(cloud, mesh);
+    testRandomVelocity(cloud, mesh);
 
     Info<< nl << (nFailed() ? "FAILED " : "passed ") << nFailed()
         << " failure(s)" << endl;

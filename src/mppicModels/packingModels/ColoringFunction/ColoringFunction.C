@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ColoringFunction.H"
+#include "boundedCoefficient.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -44,6 +45,14 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     (
         this->coeffs().lookupOrDefault("conserveMomentum", false)
     ),
+    randomVelocity_
+    (
+        mppicCoefficients::read
+        (
+            this->coeffs(), "randomVelocity", 0,
+            mppicCoefficients::bounds::closed(0, 0.1)
+        )
+    ),
     reactions_(),
     limit_
     (
@@ -66,6 +75,7 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     impulse_(cm.impulse_),
     capacityLimit_(cm.capacityLimit_),
     conserveMomentum_(cm.conserveMomentum_),
+    randomVelocity_(cm.randomVelocity_),
     reactions_(),
     limit_(cm.limit_)
 {}
@@ -240,10 +250,18 @@ velocityCorrection
 {
     const packState pack = packFor(p);
 
+    // MFiX-PIC's random velocity, after the forces and before the rules
+    vector U = p.U();
+    if (randomVelocity_ > 0)
+    {
+        U += randomVelocity_
+           *cmptMultiply(this->owner().rndGen().template GaussNormal<vector>(), U);
+    }
+
     vector correction =
         rules_.correctedVelocity
         (
-            p.U(),
+            U,
             pack.uMean,
             pack.impulse,
             this->owner().g().value(),
