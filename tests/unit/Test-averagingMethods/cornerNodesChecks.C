@@ -10,8 +10,10 @@ Description
     corner shares what it holds equally among the cells around it that
     exist (8 inside, 4 on a wall, 2 on an edge, 1 in a corner; a cyclic
     wraps round), i.e. in proportion to their volumes as MFiX does.
-    Also: hand values at a cell centre, conservation, a uniform lattice
-    next to walls, and the interpolation of a linear field.
+    Also: hand values at a cell centre, depositAt cellCentre (a parcel
+    anywhere in a cell deposits as one at its centre; a word other than
+    parcel or cellCentre is a FatalIOError), conservation, a uniform
+    lattice next to walls, and the interpolation of a linear field.
 
 \*---------------------------------------------------------------------------*/
 
@@ -149,6 +151,36 @@ void cornerNodesChecks(const fvMesh& cube, const fvMesh& box)
             mesh, cornerNodes, p.first(), nodeDeposit(*p.second(), p.first())
         );
     }
+
+    // depositAt cellCentre: a parcel anywhere in the cell at (0.45, 0.45,
+    // 0.55) deposits as the one at its centre
+    const dictionary atCentres
+    (
+        solutionDict
+        (
+            "averagingMethod cornerNodes; cornerNodesCoeffs { depositAt cellCentre; }"
+        )
+    );
+    checkWeights
+    (
+        "cornerNodes depositAt cellCentre, parcel at (0.47 0.42 0.53)", cube,
+        atCentres, point(0.47, 0.42, 0.53),
+        {
+            {point(0.45, 0.45, 0.55), 0.125},
+            {point(0.55, 0.45, 0.55), 0.0625},
+            {point(0.45, 0.45, 0.45), 0.0625},
+            {point(0.35, 0.35, 0.65), 0.015625}
+        }
+    );
+    checkTrue
+    (
+        "cornerNodes depositAt middle: FatalIOError naming the keyword and the names",
+        rejects
+        (
+            cube, "averagingMethod cornerNodes; cornerNodesCoeffs { depositAt middle; }",
+            {"depositAt", "middle", "parcel", "cellCentre"}
+        )
+    );
 
     // Conservation of 200 random parcels on the periodic cube
     {

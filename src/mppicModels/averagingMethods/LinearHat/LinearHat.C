@@ -17,7 +17,7 @@ Foam::AveragingMethods::LinearHat<Type>::LinearHat
     const fvMesh& mesh
 )
 :
-    LinearHat<Type>(io, dict, mesh, false)
+    LinearHat<Type>(io, dict, mesh, false, false)
 {}
 
 
@@ -27,7 +27,8 @@ Foam::AveragingMethods::LinearHat<Type>::LinearHat
     const IOobject& io,
     const dictionary& dict,
     const fvMesh& mesh,
-    const bool cornerNodes
+    const bool cornerNodes,
+    const bool depositAtCellCentres
 )
 :
     AveragingMethod<Type>(io, dict, mesh, labelList(1, mesh.nCells())),
@@ -36,7 +37,8 @@ Foam::AveragingMethods::LinearHat<Type>::LinearHat
     dataGrad_(mesh.nCells()),
     ghostDeposits_(kernel_.nGhosts(), Zero),
     ghostValues_(kernel_.nGhosts(), Zero),
-    cornerNodes_(cornerNodes)
+    cornerNodes_(cornerNodes),
+    depositAtCellCentres_(depositAtCellCentres)
 {}
 
 
@@ -52,7 +54,8 @@ Foam::AveragingMethods::LinearHat<Type>::LinearHat
     dataGrad_(am.dataGrad_),
     ghostDeposits_(am.ghostDeposits_),
     ghostValues_(am.ghostValues_),
-    cornerNodes_(am.cornerNodes_)
+    cornerNodes_(am.cornerNodes_),
+    depositAtCellCentres_(am.depositAtCellCentres_)
 {}
 
 
@@ -94,7 +97,10 @@ void Foam::AveragingMethods::LinearHat<Type>::add
     const Type& value
 )
 {
-    const point x = position(coordinates, tetIs);
+    const point x =
+        depositAtCellCentres_
+      ? this->mesh_.cellCentres()[tetIs.cell()]
+      : position(coordinates, tetIs);
     if (cornerNodes_)
     {
         kernel_.template deposit<Type, linearHatKernel::cornerNodeWeights>
