@@ -19,8 +19,13 @@
 #     With steps only from the cells across processor faces, no linear-hat
 #     interpolation, 16 ranks 0.0048, 0.11, 0.15: the check can fail);
 #   - the same parcel count and cloud mass (to 1e-12).
+# parallelLinearHat <runDir> cornerNodes (parallelCornerNodes.sh): the
+# default coloringFunction instead, the gas fraction deposited with
+# averagingMethod cornerNodes (solidsFractionFrom averaging, parcels at their
+# own places: the 27-cell blocks across processor faces), the same checks.
 #------------------------------------------------------------------------------
-runDir="${1:?usage: parallelLinearHat.sh <runDir>}"
+runDir="${1:?usage: parallelLinearHat.sh <runDir> [cornerNodes]}"
+method="${2:-linearHat}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 for mode in serial parallel parallel16
@@ -29,11 +34,21 @@ do
     copyTutorial validation/uniformFluidization "$dir"
     setEntry "$dir" system/controlDict writePrecision 15
     # (foamDictionary cannot address the keys U.air and alpha.air)
-    sed -i 's/^\( *\(U\|alpha\)\.air  *\)cell;/\1linearHat;/' \
-        "$dir/constant/kinematicCloudProperties"
-    [ "$(grep -c -E '(U|alpha)\.air +linearHat;' \
-        "$dir/constant/kinematicCloudProperties")" = 2 ] \
-        || { echo "interpolationSchemes not set"; exit 1; }
+    if [ "$method" = cornerNodes ]
+    then
+        sed -i -e 's/^solidsFractionFrom .*/solidsFractionFrom  averaging;/' \
+            -e 's/^\( *averagingMethod \+\)basic;/\1cornerNodes;/' \
+            "$dir/constant/kinematicCloudProperties"
+        grep -q "averagingMethod cornerNodes;" \
+            "$dir/constant/kinematicCloudProperties" \
+            || { echo "averagingMethod not set"; exit 1; }
+    else
+        sed -i 's/^\( *\(U\|alpha\)\.air  *\)cell;/\1linearHat;/' \
+            "$dir/constant/kinematicCloudProperties"
+        [ "$(grep -c -E '(U|alpha)\.air +linearHat;' \
+            "$dir/constant/kinematicCloudProperties")" = 2 ] \
+            || { echo "interpolationSchemes not set"; exit 1; }
+    fi
     # (foamDictionary cannot address the regular-expression key "U.air.*"
     # and would expand pFinal's $p)
     sed -i -e '/^    p$/,/}/{' \
@@ -53,12 +68,14 @@ sed -i -e 's/^numberOfSubdomains .*/numberOfSubdomains 16;/' \
 grep -q '(2 4 2)' "$runDir/parallel16/system/decomposeParDict" \
     || { echo "decomposeParDict not set to 16"; exit 1; }
 
-runAllrun "$runDir/serial" 0.01 -packing mfixSnider || exit 1
+packing="-packing mfixSnider"
+[ "$method" = cornerNodes ] && packing=""
+runAllrun "$runDir/serial" 0.01 $packing || exit 1
 export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1
 status=0
 for mode in parallel parallel16
 do
-    runAllrun "$runDir/$mode" 0.01 -packing mfixSnider -parallel || exit 1
+    runAllrun "$runDir/$mode" 0.01 $packing -parallel || exit 1
     [ -d "$runDir/$mode/processor1/0.01" ] || { echo "no $mode run"; exit 1; }
     check sameState "$runDir/serial" "$runDir/$mode" 0.01 1e-9 \
         alpha.air U.air kinematicCloud:UMean || status=1

@@ -131,11 +131,11 @@ void linearHatConservation(const fvMesh& cube)
 // A lattice of 2 x 2 parcels per cell of the box, at a quarter cell from
 // the centre in x and y, deposits 4 parcels' worth in every cell, next to
 // the walls and in the corners too (the reflected part makes up for what
-// the cell beyond the wall would give)
-void linearHatUniformLattice(const fvMesh& box)
+// the cell beyond the wall would give); method linearHat or cornerNodes
+void linearHatUniformLattice(const fvMesh& box, const word& method)
 {
-    const dictionary linearHat(solutionDict("averagingMethod linearHat;"));
-    autoPtr<AveragingMethod<scalar>> average(newAverage<scalar>(box, linearHat));
+    const dictionary solution(solutionDict("averagingMethod " + method + ";"));
+    autoPtr<AveragingMethod<scalar>> average(newAverage<scalar>(box, solution));
 
     const scalar h = 0.25;
     for (label i = 0; i < 8; ++i)
@@ -149,8 +149,8 @@ void linearHatUniformLattice(const fvMesh& box)
 
     const scalarField density(average->primitiveField());
     const scalar expected = 4/(h*h*0.1);
-    checkClose("uniform lattice: largest cell value", max(density), expected, tol);
-    checkClose("uniform lattice: smallest cell value", min(density), expected, tol);
+    checkClose(method + " uniform lattice: largest cell value", max(density), expected, tol);
+    checkClose(method + " uniform lattice: smallest cell value", min(density), expected, tol);
 }
 
 
@@ -277,7 +277,7 @@ int main(int argc, char *argv[])
 
     linearHatWeights(cube, mesh);
     linearHatConservation(cube);
-    linearHatUniformLattice(mesh);
+    linearHatUniformLattice(mesh, "linearHat");
     linearHatInterpolation(cube);
     boundaryInterpolation(mesh);
     diffusionSpreading(cube, mesh);

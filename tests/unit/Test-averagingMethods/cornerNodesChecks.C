@@ -23,6 +23,9 @@ Description
 using namespace Foam;
 using namespace Foam::averagingTest;
 
+// (Test-averagingMethods.C)
+void linearHatUniformLattice(const fvMesh& box, const word& method);
+
 namespace
 {
 
@@ -198,24 +201,8 @@ void cornerNodesChecks(const fvMesh& cube, const fvMesh& box)
         );
     }
 
-    // 2 x 2 parcels per cell of the box at a quarter cell from the centre:
-    // every cell holds 4 parcels' worth, next to the walls too
-    {
-        autoPtr<AveragingMethod<scalar>> average(newAverage<scalar>(box, cornerNodes));
-        const scalar h = 0.25;
-        for (label i = 0; i < 8; ++i)
-        {
-            for (label j = 0; j < 16; ++j)
-            {
-                deposit(average(), box, point((i + 0.5)*h/2, (j + 0.5)*h/2, 0.05), 1.0);
-            }
-        }
-        average->average();
-        const scalarField density(average->primitiveField());
-        const scalar expected = 4/(h*h*0.1);
-        checkClose("cornerNodes uniform lattice: largest cell value", max(density), expected, tol);
-        checkClose("cornerNodes uniform lattice: smallest cell value", min(density), expected, tol);
-    }
+    // 2 x 2 parcels per cell, next to the walls too (Test-averagingMethods.C)
+    linearHatUniformLattice(box, "cornerNodes");
 
     // A linear field is read back exactly inside: the weights of the steps
     // -1 and +1 differ by a/2, a = 2 (x - x_c)/h
