@@ -5,9 +5,9 @@ Application
     Test-averagingMethods
 
 Description
-    The averaging methods linearHat, cornerNodes (cornerNodesChecks.C) and
-    diffusion (diffusionChecks.C) and the linearHat
-    interpolation of libmppicModels, selected by name through OpenFOAM's
+    The averaging methods linearHat, cornerNodes (cornerNodesChecks.C),
+    diffusion (diffusionChecks.C) and the linearHat interpolation of
+    libmppicModels, selected by name through OpenFOAM's
     run-time tables as the MPPIC cloud selects them, on two meshes:
     - region "periodic": a 1 m cube of 10 x 10 x 10 cells of 0.1 m (centres
       at 0.05, 0.15, ..., 0.95), every boundary cyclic;
@@ -132,7 +132,7 @@ void linearHatConservation(const fvMesh& cube)
 // the centre in x and y, deposits 4 parcels' worth in every cell, next to
 // the walls and in the corners too (the reflected part makes up for what
 // the cell beyond the wall would give); method linearHat or cornerNodes
-void linearHatUniformLattice(const fvMesh& box, const word& method)
+void uniformLattice(const fvMesh& box, const word& method)
 {
     const dictionary solution(solutionDict("averagingMethod " + method + ";"));
     autoPtr<AveragingMethod<scalar>> average(newAverage<scalar>(box, solution));
@@ -277,7 +277,7 @@ int main(int argc, char *argv[])
 
     linearHatWeights(cube, mesh);
     linearHatConservation(cube);
-    linearHatUniformLattice(mesh, "linearHat");
+    uniformLattice(mesh, "linearHat");
     linearHatInterpolation(cube);
     boundaryInterpolation(mesh);
     diffusionSpreading(cube, mesh);

@@ -24,7 +24,7 @@ using namespace Foam;
 using namespace Foam::averagingTest;
 
 // (Test-averagingMethods.C)
-void linearHatUniformLattice(const fvMesh& box, const word& method);
+void uniformLattice(const fvMesh& box, const word& method);
 
 namespace
 {
@@ -202,7 +202,7 @@ void cornerNodesChecks(const fvMesh& cube, const fvMesh& box)
     }
 
     // 2 x 2 parcels per cell, next to the walls too (Test-averagingMethods.C)
-    linearHatUniformLattice(box, "cornerNodes");
+    uniformLattice(box, "cornerNodes");
 
     // A linear field is read back exactly inside: the weights of the steps
     // -1 and +1 differ by a/2, a = 2 (x - x_c)/h

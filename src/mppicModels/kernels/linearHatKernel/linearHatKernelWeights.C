@@ -63,7 +63,6 @@ void Foam::linearHatKernel::evaluate
 }
 
 
-
 void Foam::linearHatKernel::evaluate
 (
     const point& position,
