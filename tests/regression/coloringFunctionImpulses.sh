@@ -2,10 +2,11 @@
 #------------------------------------------------------------------------------
 # coloringFunctionImpulses <runDir>
 # tutorials/verification/sedimentation (1 s, about 50 s a run) with
-# coloringFunction's other two impulses, capacityLimit left at its default
+# coloringFunction's other three impulses, capacityLimit left at its default
 # (true, which acts with impulse neighbour only): impulse gradient (seed 1
-# eq 19 on the averaging's gradient) and impulse faceGradient (MFiX-PIC's
-# face gradient). Before 2026-11-26 faceGradient with the capacity limit
+# eq 19 on the averaging's gradient), impulse faceGradient (MFiX-PIC's
+# face gradient from the parcel's own cell) and impulse cornerNodeGradient
+# (the same brought through the cell corners, as MFiX's GARG_2012). Before 2026-11-26 faceGradient with the capacity limit
 # stopped at its first step (the packing field unallocated): FAIL here.
 # Checks for each: the run ends; 2400 parcels and the cloud mass
 # (seeded volume * 2500 kg/m3) to 1e-9 at the end; the final bed height
@@ -17,7 +18,7 @@ runDir="${1:?usage: coloringFunctionImpulses.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 status=0
-for impulse in gradient faceGradient
+for impulse in gradient faceGradient cornerNodeGradient
 do
     case="$runDir/$impulse"
     copyTutorial verification/sedimentation "$case"

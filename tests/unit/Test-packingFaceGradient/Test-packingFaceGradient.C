@@ -42,6 +42,9 @@ Description
 
 using namespace Foam::unitTest;
 
+// (cornerNodeGradientChecks.C)
+void cornerNodeGradientChecks(const fvMesh& mesh);
+
 void checkVector(const string& what, const vector& value, const vector& expected)
 {
     for (direction k = 0; k < vector::nComponents; ++k)
@@ -96,6 +99,8 @@ int main(int argc, char *argv[])
         ),
         vector(1.4, 0, 0)
     );
+
+    cornerNodeGradientChecks(mesh);
 
     return summary();
 }

@@ -81,14 +81,12 @@ void Foam::linearHatKernel::evaluate
     FixedList<FixedList<scalar, 3>, 3> along;
     for (label i = 0; i < 3; ++i)
     {
-        const scalar towardPlus = offset & towardOwnFace_[firstFace + 2*i];
         const scalar a =
-            towardPlus > 0
-          ? min(towardPlus, scalar(1))
-          : -min
+            placeBetweenFaces
             (
-                max(offset & towardOwnFace_[firstFace + 2*i + 1], scalar(0)),
-                scalar(1)
+                offset,
+                towardOwnFace_[firstFace + 2*i],
+                towardOwnFace_[firstFace + 2*i + 1]
             );
         along[i][0] = 0.25*(1 - a);
         along[i][1] = 0.5;

@@ -17,6 +17,7 @@ Foam::PackingModels::ColoringFunction<CloudType>::impulseTypeNames
 ({
     { impulseType::gradient, "gradient" },
     { impulseType::faceGradient, "faceGradient" },
+    { impulseType::cornerNodeGradient, "cornerNodeGradient" },
     { impulseType::neighbour, "neighbour" },
 });
 
@@ -100,9 +101,12 @@ Foam::PackingModels::ColoringFunction<CloudType>::packFor
         return pack;
     }
 
-    if (impulse_ == impulseType::faceGradient)
+    if (impulse_ != impulseType::neighbour)
     {
-        pack.impulse = -this->faceGradientAt(p);
+        pack.impulse =
+            impulse_ == impulseType::faceGradient
+          ? -this->faceGradientAt(p)
+          : -this->cornerNodeFaceGradientAt(p);
         pack.uMean = this->uMeanAt(p);
         pack.cell = this->globalCell(p);
         return pack;

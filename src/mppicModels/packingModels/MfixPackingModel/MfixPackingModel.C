@@ -31,7 +31,8 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     coupledValues_(),
     coupledUMean_(),
     cellAddedMomentum_(),
-    addedMomentumStep_(-1)
+    addedMomentumStep_(-1),
+    kernel_(nullptr)
 {}
 
 
@@ -52,7 +53,8 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     coupledValues_(),
     coupledUMean_(),
     cellAddedMomentum_(),
-    addedMomentumStep_(-1)
+    addedMomentumStep_(-1),
+    kernel_(nullptr)
 {}
 
 
@@ -118,6 +120,24 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheCellValues()
     (
         mesh, uAverage_->primitiveField()(), cellUMean_, coupledUMean_
     );
+
+    if (needsCornerNodeGradient())
+    {
+        // Collective: every processor sends its cells' values
+        kernel_ = &linearHatKernel::New(mesh);
+        kernel_->ghostValues(cellValues_, ghostValues_);
+
+        cellBeyond_.setSize(cellValues_.size());
+        forAll(cellValues_, celli)
+        {
+            cellBeyond_[celli] = wallValue(cellValues_[celli]);
+        }
+        ghostBeyond_.setSize(ghostValues_.size());
+        forAll(ghostValues_, ghosti)
+        {
+            ghostBeyond_[ghosti] = wallValue(ghostValues_[ghosti]);
+        }
+    }
 }
 
 
@@ -259,6 +279,27 @@ Foam::vector Foam::PackingModels::MfixPackingModel<CloudType>::faceGradientAt
 }
 
 
+template<class CloudType>
+Foam::vector
+Foam::PackingModels::MfixPackingModel<CloudType>::cornerNodeFaceGradientAt
+(
+    const typename CloudType::parcelType& p
+) const
+{
+    if (!kernel_->hexahedral(p.cell()))
+    {
+        return faceGradientAt(p);
+    }
+
+    return
+        kernel_->cornerNodeFaceGradient
+        (
+            cellValues_, ghostValues_, cellBeyond_, ghostBeyond_,
+            p.position(), p.cell()
+        );
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -278,6 +319,9 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheFields
         cellUMean_.clear();
         coupledValues_.clear();
         coupledUMean_.clear();
+        ghostValues_.clear();
+        cellBeyond_.clear();
+        ghostBeyond_.clear();
         return;
     }
 
