@@ -161,17 +161,17 @@ void Foam::cloudInputChecks::sizeDistributions
     const dictionary& cloudProperties
 )
 {
-    const dictionary& injectors =
-        cloudProperties.subOrEmptyDict("subModels")
-       .subOrEmptyDict("injectionModels");
-
-    for (const entry& e : injectors)
-    {
-        if (e.isDict() && e.dict().isDict("sizeDistribution"))
+    forEachInjectionModel
+    (
+        cloudProperties,
+        [](const dictionary& model)
         {
-            checkSizeDistribution(e.dict().subDict("sizeDistribution"));
+            if (model.isDict("sizeDistribution"))
+            {
+                checkSizeDistribution(model.subDict("sizeDistribution"));
+            }
         }
-    }
+    );
 }
 
 
