@@ -49,7 +49,6 @@ two runs are apart (seeds of the parcel jitter, serial and parallel).
 values, the largest cell solids fraction keeps the bound, and the mean deltaP
 is within --tolerance of the bed weight.
 """
-import argparse
 import glob
 import math
 import os
@@ -338,18 +337,13 @@ def compare_runs(case, others, t0):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--case", default=".")
-    post.add_table_arguments(parser, "coloringFunction")
+    parser = post.results_parser("coloringFunction")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--tolerance", type=float, default=0.15)
     parser.add_argument("--from", dest="t0", type=float, default=None)
     parser.add_argument("--against", nargs="+", default=[])
-    args = parser.parse_args()
-    if args.tableHead:
-        print(TABLE_HEAD)
-        return 0
+    args = post.parse_results_args(parser, TABLE_HEAD)
     if args.against:
         return compare_runs(args.case, args.against, args.t0)
 

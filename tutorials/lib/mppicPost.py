@@ -36,10 +36,12 @@ through the tutorials folder they sit in:
     sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR",
                                     <the project>), "tutorials", "lib"))
 """
+import argparse
 import glob
 import math
 import os
 import re
+import sys
 
 import numpy as np
 
@@ -95,6 +97,25 @@ def add_table_arguments(parser, label):
     parser.add_argument("--row", action="store_true")
     parser.add_argument("--wallTime", type=float, default=None)
     parser.add_argument("--failure", default="")
+
+
+def results_parser(label, description=None):
+    """The command line a results script starts from: --case DIR (default
+    the current folder) and the table options of add_table_arguments."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--case", default=".")
+    add_table_arguments(parser, label)
+    return parser
+
+
+def parse_results_args(parser, table_head):
+    """The script's parsed options; with --tableHead, prints table_head and
+    exits with status 0 (bin/compareSolvers asks for the head alone)."""
+    args = parser.parse_args()
+    if args.tableHead:
+        print(table_head)
+        sys.exit(0)
+    return args
 
 
 def control_entry(case, key):

@@ -117,12 +117,8 @@ int main(int argc, char *argv[])
         "PIMPLE solver for an incompressible gas coupled to an MPPIC"
         " parcel cloud (libmppicModels)"
     );
-    argList::addOption
-    (
-        "cloud",
-        "name",
-        "name of the cloud (default: kinematicCloud)"
-    );
+    const word defaultCloudName("kinematicCloud");
+    #include "addCloudOption.H"
 
     #include "postProcess.H"
 
@@ -161,6 +157,7 @@ int main(int argc, char *argv[])
         }
 
         #include "evolveCloud.H"
+        alphaPhig = alphagf*phig;
 
         if (prescribedFlow.valid())
         {
@@ -182,14 +179,7 @@ int main(int argc, char *argv[])
             }
         }
 
-        if (packingMonitorPtr.valid())
-        {
-            packingMonitorPtr->write();
-        }
-
-        runTime.write();
-
-        runTime.printExecutionTime(Info);
+        #include "writeTimeStep.H"
     }
 
     Info<< "End\n" << endl;

@@ -34,11 +34,14 @@ Description
     with gravity as face fluxes); S_rho, S_Yi, S_h and F_cloud are the
     cloud's Srho, SYi, Sh and SU.
 
-    What it shares with mppicPimpleFoam is written once: the cloud's
-    gas fraction (mppicCommon/createCloudGasFraction.H,
-    updateCloudGasFraction.H), the split of its momentum source
+    What it shares with mppicPimpleFoam is written once: the -cloud option
+    and the cloud's name (mppicCommon/addCloudOption.H, readCloudName.H),
+    the gas fraction field (createGasFraction.H) and the cloud's share of
+    it (createCloudGasFraction.H, updateCloudGasFraction.H), the cloud's
+    step (evolveCloud.H), the split of its momentum source
     (cloudMomentumSource.H), the construction of the cloud
     (newCloudOrExit.H), the packing monitor (createPackingMonitor.H), the
+    end of a time step (writeTimeStep.H), the
     solids sub-cycling (libmppicModels'
     SolidsSubCycle, which sums the momentum, enthalpy and species sources
     over the sub-steps: CloudSourceSum) and the solids deposition
@@ -90,12 +93,8 @@ int main(int argc, char *argv[])
         "PIMPLE solver for a compressible multi-species gas coupled to a"
         " reacting MPPIC parcel cloud (libmppicModels)"
     );
-    argList::addOption
-    (
-        "cloud",
-        "name",
-        "name of the cloud (default: reactingCloud)"
-    );
+    const word defaultCloudName("reactingCloud");
+    #include "addCloudOption.H"
 
     #include "postProcess.H"
 
@@ -125,6 +124,7 @@ int main(int argc, char *argv[])
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
         #include "evolveCloud.H"
+        alphaPhi = alphagf*phi;
 
         if (pimple.nCorrPIMPLE() <= 1)
         {
@@ -145,14 +145,7 @@ int main(int argc, char *argv[])
 
         rho = thermo.rho();
 
-        if (packingMonitorPtr.valid())
-        {
-            packingMonitorPtr->write();
-        }
-
-        runTime.write();
-
-        runTime.printExecutionTime(Info);
+        #include "writeTimeStep.H"
     }
 
     Info<< "End\n" << endl;

@@ -102,6 +102,7 @@ Description
 #include "sniderStressRules.H"
 #include "unitTest.H"
 #include "uniformAirFields.H"
+#include "sniderCoeffs.H"
 #include "sniderRuleChecks.H"
 #include "sniderCloudChecks.H"
 
@@ -194,12 +195,7 @@ void testLimiterAndMean(cloudType& cloud, const fvMesh& mesh)
 
     dictionary subModels;
     subModels.add("packingModel", "mfixSnider");
-    dictionary coeffs;
-    coeffs.add("closePackFraction", 0.6);
-    coeffs.add("pSolid", 100);
-    coeffs.add("gamma", 3);
-    coeffs.add("eps", 1e-7);
-    coeffs.add("e1", 0.85);
+    dictionary coeffs(sniderCoeffs());
     coeffs.add("slipVelocityFactor", 1);
     subModels.add("mfixSniderCoeffs", coeffs);
 

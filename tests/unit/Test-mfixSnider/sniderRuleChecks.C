@@ -16,16 +16,30 @@ Description
 using namespace Foam;
 using namespace Foam::unitTest;
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- sniderStressRules coefficients: close pack 0.6 and the switch keyword
+//  on or off (the other coefficients at their defaults)
+dictionary switchCoeffs(const word& keyword, const bool on)
+{
+    dictionary coeffs;
+    coeffs.add("closePackFraction", 0.6);
+    coeffs.add(keyword, on);
+    return coeffs;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Test groups * * * * * * * * * * * * * * //
 
 void testMeanFreePathCap()
 {
-    dictionary coeffs;
-    coeffs.add("closePackFraction", 0.6);
-    coeffs.add("meanFreePathCap", true);
-    const sniderStressRules capped(coeffs);
-    coeffs.set("meanFreePathCap", false);
-    const sniderStressRules uncapped(coeffs);
+    const sniderStressRules capped(switchCoeffs("meanFreePathCap", true));
+    const sniderStressRules uncapped(switchCoeffs("meanFreePathCap", false));
 
     const scalar l = 3.7*0.005/(3*Foam::sqrt(2.0)*0.65);
     const vector up(0, 10, 0);
@@ -59,12 +73,8 @@ void testMeanFreePathCap()
 
 void testRestWhereConverging()
 {
-    dictionary coeffs;
-    coeffs.add("closePackFraction", 0.6);
-    coeffs.add("restWhereConverging", true);
-    const sniderStressRules rest(coeffs);
-    coeffs.set("restWhereConverging", false);
-    const sniderStressRules mean(coeffs);
+    const sniderStressRules rest(switchCoeffs("restWhereConverging", true));
+    const sniderStressRules mean(switchCoeffs("restWhereConverging", false));
 
     const vector U(0, -1, 0);
     const vector dU(0, 100, 0);

@@ -120,16 +120,20 @@ dictionary colouringCoeffs
 }
 
 
-dictionary sniderCoeffs()
+//- One hand case of coloringFunctionRules::correctedVelocity: the rules,
+//  the intermediate velocity U, the mean solids velocity us, the impulse
+//  direction dV, whether the cell is at close pack and the velocity
+//  expected (Description)
+struct colouringCase
 {
-    dictionary dict;
-    dict.add("closePackFraction", 0.6);
-    dict.add("pSolid", 100.0);
-    dict.add("gamma", 3.0);
-    dict.add("eps", 1e-7);
-    dict.add("e1", 0.85);
-    return dict;
-}
+    const char* what;
+    const coloringFunctionRules& rules;
+    vector U;
+    vector us;
+    vector dV;
+    bool closePacked;
+    vector expected;
+};
 
 
 void testColoringFunction()
@@ -138,157 +142,57 @@ void testColoringFunction()
     const coloringFunctionRules rules(colouringCoeffs());
     const coloringFunctionRules no1a(colouringCoeffs(false, true));
     const coloringFunctionRules no1b(colouringCoeffs(true, false));
+    const coloringFunctionRules normal(colouringCoeffs(true, true, "normal"));
 
     checkClose("chi(0.59)", rules.colour(0.59), 0, 0, 1);
     checkClose("chi(0.6)", rules.colour(0.6), 0.6);
     checkClose("chi(0.65)", rules.colour(0.65), 0.65);
 
-    checkVector
-    (
-        "approach, eq 20",
-        rules.correctedVelocity
-        (
-            vector(-2, 0.3, 0), vector(0.5, 0, 0), vector(1, 0, 0), g
-        ),
-        vector(1.75, -0.15, 0)
-    );
-    checkVector
-    (
-        "separation, unchanged",
-        rules.correctedVelocity
-        (
-            vector(2, 0, 0), vector(0.5, 0, 0), vector(1, 0, 0), g
-        ),
-        vector(2, 0, 0)
-    );
-    checkVector
-    (
-        "Case 1a on",
-        rules.correctedVelocity
-        (
-            vector(0.2, -1, 0), vector(0, -0.1, 0), vector(0, 1, 0), g
-        ),
-        vector(-0.1, 0.5, 0)
-    );
-    checkVector
-    (
-        "Case 1a off",
-        no1a.correctedVelocity
-        (
-            vector(0.2, -1, 0), vector(0, -0.1, 0), vector(0, 1, 0), g
-        ),
-        vector(-0.1, 0.35, 0)
-    );
-    checkVector
-    (
-        "Case 1b on",
-        rules.correctedVelocity
-        (
-            vector(-0.5, 0, 0), vector(-1, 0, 0), vector(1, 0, 0), g
-        ),
-        vector(-0.45, 0, 0)
-    );
-    checkVector
-    (
-        "Case 1b off",
-        no1b.correctedVelocity
-        (
-            vector(-0.5, 0, 0), vector(-1, 0, 0), vector(1, 0, 0), g
-        ),
-        vector(-0.5, 0, 0)
-    );
-    checkVector
-    (
-        "Case 1b then Case 1a along gravity",
-        rules.correctedVelocity
-        (
-            vector(0, -0.5, 0), vector(0, -1, 0), vector(0, 1, 0), g
-        ),
-        vector(0, 0.25, 0)
-    );
-    checkVector
-    (
-        "Case 1b along gravity, Case 1a off",
-        no1a.correctedVelocity
-        (
-            vector(0, -0.5, 0), vector(0, -1, 0), vector(0, 1, 0), g
-        ),
-        vector(0, -0.45, 0)
-    );
-    checkVector
-    (
-        "below close pack: Case 1a not applied",
-        rules.correctedVelocity
-        (
-            vector(0.2, -1, 0), vector(0, -0.1, 0), vector(0, 1, 0), g, false
-        ),
-        vector(-0.1, 0.35, 0)
-    );
-    checkVector
-    (
-        "below close pack: Case 1b not applied",
-        rules.correctedVelocity
-        (
-            vector(-0.5, 0, 0), vector(-1, 0, 0), vector(1, 0, 0), g, false
-        ),
-        vector(-0.5, 0, 0)
-    );
-    checkVector
-    (
-        "below close pack: neither Case 1b nor 1a along gravity",
-        rules.correctedVelocity
-        (
-            vector(0, -0.5, 0), vector(0, -1, 0), vector(0, 1, 0), g, false
-        ),
-        vector(0, -0.5, 0)
-    );
-    checkVector
-    (
-        "below close pack: approach, eq 20",
-        rules.correctedVelocity
-        (
-            vector(-2, 0.3, 0), vector(0.5, 0, 0), vector(1, 0, 0), g, false
-        ),
-        vector(1.75, -0.15, 0)
-    );
-    const coloringFunctionRules normal(colouringCoeffs(true, true, "normal"));
-    checkVector
-    (
-        "approach, normal component only",
-        normal.correctedVelocity
-        (
-            vector(-2, 0.3, 0), vector(0.5, 0, 0), vector(1, 0, 0), g
-        ),
-        vector(1.75, 0.3, 0)
-    );
-    checkVector
-    (
-        "Case 1b, normal component only",
-        normal.correctedVelocity
-        (
-            vector(-0.5, 0.2, 0), vector(-1, 0, 0), vector(1, 0, 0), g
-        ),
-        vector(-0.45, 0.2, 0)
-    );
-    checkVector
-    (
-        "Case 1a, normal reflection (impulse along g)",
-        normal.correctedVelocity
-        (
-            vector(0.2, -1, 0), vector(0, -0.1, 0), vector(0, 1, 0), g
-        ),
-        vector(0.2, 0.5, 0)
-    );
+    const colouringCase cases[] =
+    {
+        {"approach, eq 20", rules,
+            {-2, 0.3, 0}, {0.5, 0, 0}, {1, 0, 0}, true, {1.75, -0.15, 0}},
+        {"separation, unchanged", rules,
+            {2, 0, 0}, {0.5, 0, 0}, {1, 0, 0}, true, {2, 0, 0}},
+        {"Case 1a on", rules,
+            {0.2, -1, 0}, {0, -0.1, 0}, {0, 1, 0}, true, {-0.1, 0.5, 0}},
+        {"Case 1a off", no1a,
+            {0.2, -1, 0}, {0, -0.1, 0}, {0, 1, 0}, true, {-0.1, 0.35, 0}},
+        {"Case 1b on", rules,
+            {-0.5, 0, 0}, {-1, 0, 0}, {1, 0, 0}, true, {-0.45, 0, 0}},
+        {"Case 1b off", no1b,
+            {-0.5, 0, 0}, {-1, 0, 0}, {1, 0, 0}, true, {-0.5, 0, 0}},
+        {"Case 1b then Case 1a along gravity", rules,
+            {0, -0.5, 0}, {0, -1, 0}, {0, 1, 0}, true, {0, 0.25, 0}},
+        {"Case 1b along gravity, Case 1a off", no1a,
+            {0, -0.5, 0}, {0, -1, 0}, {0, 1, 0}, true, {0, -0.45, 0}},
+        {"below close pack: Case 1a not applied", rules,
+            {0.2, -1, 0}, {0, -0.1, 0}, {0, 1, 0}, false, {-0.1, 0.35, 0}},
+        {"below close pack: Case 1b not applied", rules,
+            {-0.5, 0, 0}, {-1, 0, 0}, {1, 0, 0}, false, {-0.5, 0, 0}},
+        {"below close pack: neither Case 1b nor 1a along gravity", rules,
+            {0, -0.5, 0}, {0, -1, 0}, {0, 1, 0}, false, {0, -0.5, 0}},
+        {"below close pack: approach, eq 20", rules,
+            {-2, 0.3, 0}, {0.5, 0, 0}, {1, 0, 0}, false, {1.75, -0.15, 0}},
+        {"approach, normal component only", normal,
+            {-2, 0.3, 0}, {0.5, 0, 0}, {1, 0, 0}, true, {1.75, 0.3, 0}},
+        {"Case 1b, normal component only", normal,
+            {-0.5, 0.2, 0}, {-1, 0, 0}, {1, 0, 0}, true, {-0.45, 0.2, 0}},
+        {"Case 1a, normal reflection (impulse along g)", normal,
+            {0.2, -1, 0}, {0, -0.1, 0}, {0, 1, 0}, true, {0.2, 0.5, 0}},
+        {"no close pack near (zero gradient), unchanged", rules,
+            {0.3, -2, 0.1}, {0, -0.1, 0}, vector::zero, true, {0.3, -2, 0.1}}
+    };
 
-    checkVector
-    (
-        "no close pack near (zero gradient), unchanged",
-        rules.correctedVelocity
+    for (const colouringCase& c : cases)
+    {
+        checkVector
         (
-            vector(0.3, -2, 0.1), vector(0, -0.1, 0), vector::zero, g
-        ),
-        vector(0.3, -2, 0.1)
-    );
+            c.what,
+            c.rules.correctedVelocity(c.U, c.us, c.dV, g, c.closePacked),
+            c.expected
+        );
+    }
 }
 
 

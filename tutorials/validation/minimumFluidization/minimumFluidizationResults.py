@@ -35,7 +35,6 @@ Usage:
         the rest of the cloud's vertical momentum budget, the walls' and the
         distributor's (mppicPost.packing_force, weight_rest)
 """
-import argparse
 import math
 import os
 import re
@@ -290,9 +289,7 @@ def weight_split(case, t0, t1):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--case", default=".")
-    post.add_table_arguments(parser, "run")
+    parser = post.results_parser("run", __doc__.split("\n")[0])
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--overlay", nargs="+", metavar="CASE:LABEL",
                         help="plot these runs' curves on one plot (--out)")

@@ -28,7 +28,6 @@ Usage:
     rayleighTaylorResults.py [--case DIR] [--label L] [--plot] [--row]
         [--tableHead]
 """
-import argparse
 import os
 import re
 import sys
@@ -135,14 +134,9 @@ def plot(res, case, label):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--case", default=".")
-    post.add_table_arguments(parser, "run")
+    parser = post.results_parser("run", __doc__.split("\n")[0])
     parser.add_argument("--plot", action="store_true")
-    args = parser.parse_args()
-    if args.tableHead:
-        print(TABLE_HEAD)
-        return 0
+    args = post.parse_results_args(parser, TABLE_HEAD)
     res = summary(args.case)
     if args.row:
         if "range" in res:

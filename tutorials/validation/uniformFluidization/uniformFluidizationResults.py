@@ -36,7 +36,6 @@ Usage:
         solids fraction of the model's field at every step of each run,
         against the bound 1.15 x 0.6 = 0.69
 """
-import argparse
 import math
 import os
 import re
@@ -158,11 +157,9 @@ def plot_largest(runs, bound=0.69):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--case", default=".")
+    parser = post.results_parser("run", __doc__.split("\n")[0])
     parser.add_argument("--from", dest="t0", type=float, default=None,
                         help="start of the window (default 0.4 x the run's end)")
-    post.add_table_arguments(parser, "run")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--largest", nargs="+", metavar="DIR:LABEL")
     args = parser.parse_args()

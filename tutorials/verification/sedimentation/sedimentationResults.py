@@ -31,7 +31,6 @@ and the bounds of the verification:
 With --check the exit status is 1 when a bound is not met. With --plot it
 writes sedimentation_<label>.png (max alpha_s against time, final profile).
 """
-import argparse
 import math
 import os
 import re
@@ -126,17 +125,12 @@ def table_row(res, label, wall, failure):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--case", default=".")
-    post.add_table_arguments(parser, "coloringFunction")
+    parser = post.results_parser("coloringFunction")
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--width", type=float, default=0.05)
     parser.add_argument("--depth", type=float, default=0.005)
-    args = parser.parse_args()
-    if args.tableHead:
-        print(TABLE_HEAD)
-        return 0
+    args = post.parse_results_args(parser, TABLE_HEAD)
 
     res = summary(args.case, args.width, args.depth)
     if args.row:

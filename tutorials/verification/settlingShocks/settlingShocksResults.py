@@ -40,7 +40,6 @@ tolerance of the reference: --reference exact (default: settling from the start,
 filling with the bed at rest, tolerance 0.005 m by default) or seed (eqs 6
 and 8, tolerance 0.010 m by default); --plot: settlingShocks_<es0>.png.
 """
-import argparse
 import math
 import os
 import re
@@ -179,8 +178,7 @@ def plot(ys, profile, es0, fronts, refs, path):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--case", default=".")
+    parser = post.results_parser(None, __doc__.split("\n")[0])
     parser.add_argument("--time", default="1")
     parser.add_argument("--reference", choices=("exact", "seed"),
                         default="exact")
@@ -188,11 +186,7 @@ def main():
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--hindered-velocity", type=float, metavar="ES0")
-    post.add_table_arguments(parser, None)
-    args = parser.parse_args()
-    if args.tableHead:
-        print(TABLE_HEAD)
-        return 0
+    args = post.parse_results_args(parser, TABLE_HEAD)
     if args.hindered_velocity is not None:
         es0 = args.hindered_velocity
         if not 0 < es0 < CLOSE_PACK:

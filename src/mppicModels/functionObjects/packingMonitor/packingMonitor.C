@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "packingMonitor.H"
-#include "AveragingMethod.H"
+#include "solidsFractionDeposition.H"
 #include "MfixPackingModel.H"
 #include "wallPolyPatch.H"
 #include "boundedCoefficient.H"

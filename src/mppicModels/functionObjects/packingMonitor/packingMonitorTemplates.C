@@ -54,34 +54,13 @@ Foam::functionObjects::packingMonitor::maxAveragedSolidsFraction
     const CloudType& cloud
 ) const
 {
-    autoPtr<AveragingMethod<scalar>> average
+    const autoPtr<AveragingMethod<scalar>> average
     (
-        AveragingMethod<scalar>::New
+        solidsFractionDeposition::averagedSolidsFraction
         (
-            IOobject
-            (
-                cloudName_ + ":packingMonitorAverage",
-                time_.timeName(),
-                mesh_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            cloud.solution().dict(),
-            mesh_
+            cloud, cloudName_ + ":packingMonitorAverage"
         )
     );
-
-    for (const typename CloudType::parcelType& p : cloud)
-    {
-        average->add
-        (
-            p.coordinates(),
-            p.currentTetIndices(),
-            p.nParticle()*p.volume()
-        );
-    }
-    average->average();
 
     scalar maxAlpha = 0;
     for (const Field<scalar>& values : average())

@@ -13,6 +13,35 @@
 #include "pointFields.H"
 #include "AveragingMethod.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- The sub-dictionary name of the cloud's properties, FatalIOError naming
+//  it when it is missing
+const dictionary& requiredSubDict
+(
+    const dictionary& cloudProperties,
+    const word& name
+)
+{
+    if (!cloudProperties.found(name))
+    {
+        FatalIOErrorInFunction(cloudProperties)
+            << "Dictionary " << cloudProperties.name()
+            << ": required sub-dictionary " << name << " is missing"
+            << exit(FatalIOError);
+    }
+
+    return cloudProperties.subDict(name);
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * //
 
 void Foam::cloudInputChecks::checkName
@@ -49,9 +78,10 @@ void Foam::cloudInputChecks::cloudProperties
 }
 
 
-void Foam::cloudInputChecks::statisticalWeights
+void Foam::cloudInputChecks::forEachInjectionModel
 (
-    const dictionary& cloudProperties
+    const dictionary& cloudProperties,
+    const std::function<void(const dictionary&)>& check
 )
 {
     const dictionary& injectors =
@@ -60,16 +90,35 @@ void Foam::cloudInputChecks::statisticalWeights
 
     for (const entry& e : injectors)
     {
-        if (e.isDict() && e.dict().found("nParticle"))
+        if (e.isDict())
         {
-            mppicCoefficients::read
-            (
-                e.dict(),
-                "nParticle",
-                mppicCoefficients::bounds::above(0)
-            );
+            check(e.dict());
         }
     }
+}
+
+
+void Foam::cloudInputChecks::statisticalWeights
+(
+    const dictionary& cloudProperties
+)
+{
+    forEachInjectionModel
+    (
+        cloudProperties,
+        [](const dictionary& model)
+        {
+            if (model.found("nParticle"))
+            {
+                mppicCoefficients::read
+                (
+                    model,
+                    "nParticle",
+                    mppicCoefficients::bounds::above(0)
+                );
+            }
+        }
+    );
 }
 
 
@@ -78,28 +127,23 @@ void Foam::cloudInputChecks::injectionAmounts
     const dictionary& cloudProperties
 )
 {
-    const dictionary& injectors =
-        cloudProperties.subOrEmptyDict("subModels")
-       .subOrEmptyDict("injectionModels");
-
-    for (const entry& e : injectors)
-    {
-        if (!e.isDict())
+    forEachInjectionModel
+    (
+        cloudProperties,
+        [](const dictionary& model)
         {
-            continue;
+            for (const word keyword : {"massTotal", "parcelsPerSecond"})
+            {
+                mppicCoefficients::read
+                (
+                    model,
+                    keyword,
+                    0,
+                    mppicCoefficients::bounds::atLeast(0)
+                );
+            }
         }
-
-        for (const word keyword : {"massTotal", "parcelsPerSecond"})
-        {
-            mppicCoefficients::read
-            (
-                e.dict(),
-                keyword,
-                0,
-                mppicCoefficients::bounds::atLeast(0)
-            );
-        }
-    }
+    );
 }
 
 
@@ -108,15 +152,8 @@ void Foam::cloudInputChecks::constantProperties
     const dictionary& cloudProperties
 )
 {
-    if (!cloudProperties.found("constantProperties"))
-    {
-        FatalIOErrorInFunction(cloudProperties)
-            << "Dictionary " << cloudProperties.name()
-            << ": required sub-dictionary constantProperties is missing"
-            << exit(FatalIOError);
-    }
-
-    const dictionary& props = cloudProperties.subDict("constantProperties");
+    const dictionary& props =
+        requiredSubDict(cloudProperties, "constantProperties");
 
     // Particle density
     mppicCoefficients::read
@@ -143,15 +180,7 @@ void Foam::cloudInputChecks::solutionControls
     const fvMesh& mesh
 )
 {
-    if (!cloudProperties.found("solution"))
-    {
-        FatalIOErrorInFunction(cloudProperties)
-            << "Dictionary " << cloudProperties.name()
-            << ": required sub-dictionary solution is missing"
-            << exit(FatalIOError);
-    }
-
-    const dictionary& solution = cloudProperties.subDict("solution");
+    const dictionary& solution = requiredSubDict(cloudProperties, "solution");
 
     // Largest parcel Courant number of a tracking step (OpenFOAM reads it
     // where given, else uses its default)

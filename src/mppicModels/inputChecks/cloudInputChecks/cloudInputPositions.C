@@ -111,23 +111,22 @@ void Foam::cloudInputChecks::injectionPositions
     const fvMesh& mesh
 )
 {
-    const dictionary& injectors =
-        cloudProperties.subOrEmptyDict("subModels")
-       .subOrEmptyDict("injectionModels");
-
-    for (const entry& e : injectors)
-    {
-        if
-        (
-            e.isDict()
-         && e.dict().lookupOrDefault<word>("type", word::null)
-         == "manualInjection"
-         && !e.dict().lookupOrDefault<bool>("ignoreOutOfBounds", false)
-        )
+    forEachInjectionModel
+    (
+        cloudProperties,
+        [&mesh](const dictionary& model)
         {
-            checkPositions(e.dict(), mesh);
+            if
+            (
+                model.lookupOrDefault<word>("type", word::null)
+             == "manualInjection"
+             && !model.lookupOrDefault<bool>("ignoreOutOfBounds", false)
+            )
+            {
+                checkPositions(model, mesh);
+            }
         }
-    }
+    );
 }
 
 

@@ -31,6 +31,22 @@ void checkSizeRange(const dictionary& coeffs)
 }
 
 
+//- The size range (checkSizeRange) and the positive shape parameters of
+//  a distribution
+void checkSizeRangeAndShape
+(
+    const dictionary& coeffs,
+    std::initializer_list<const char*> shapeParameters
+)
+{
+    checkSizeRange(coeffs);
+    for (const char* keyword : shapeParameters)
+    {
+        read(coeffs, keyword, bounds::above(0));
+    }
+}
+
+
 //- Every element of a list of scalars within range
 void checkEach
 (
@@ -123,20 +139,15 @@ void checkSizeDistribution(const dictionary& sizeDict)
     }
     else if (type == "normal")
     {
-        checkSizeRange(coeffs);
-        read(coeffs, "expectation", bounds::above(0));
-        read(coeffs, "variance", bounds::above(0));
+        checkSizeRangeAndShape(coeffs, {"expectation", "variance"});
     }
     else if (type == "RosinRammler" || type == "massRosinRammler")
     {
-        checkSizeRange(coeffs);
-        read(coeffs, "d", bounds::above(0));
-        read(coeffs, "n", bounds::above(0));
+        checkSizeRangeAndShape(coeffs, {"d", "n"});
     }
     else if (type == "exponential")
     {
-        checkSizeRange(coeffs);
-        read(coeffs, "lambda", bounds::above(0));
+        checkSizeRangeAndShape(coeffs, {"lambda"});
     }
     else if (type == "multiNormal")
     {
@@ -161,17 +172,17 @@ void Foam::cloudInputChecks::sizeDistributions
     const dictionary& cloudProperties
 )
 {
-    const dictionary& injectors =
-        cloudProperties.subOrEmptyDict("subModels")
-       .subOrEmptyDict("injectionModels");
-
-    for (const entry& e : injectors)
-    {
-        if (e.isDict() && e.dict().isDict("sizeDistribution"))
+    forEachInjectionModel
+    (
+        cloudProperties,
+        [](const dictionary& model)
         {
-            checkSizeDistribution(e.dict().subDict("sizeDistribution"));
+            if (model.isDict("sizeDistribution"))
+            {
+                checkSizeDistribution(model.subDict("sizeDistribution"));
+            }
         }
-    }
+    );
 }
 
 

@@ -13,40 +13,110 @@ namespace
 
 using namespace Foam;
 
-// Where a ray from start along direction crosses one face's plane (centre
-// c, outward normal n): leaving through it lowers the exit distance,
-// entering through it raises the entry distance
-inline void leaveThrough
-(
-    const point& c,
-    const vector& n,
-    const point& start,
-    const vector& direction,
-    scalar& distance
-)
+// Where a ray crosses one face's plane, given the ray's direction along
+// the plane's outward normal n (along = direction & n) and its start's
+// distance below the plane along n (gap = (c - start) & n, c the face
+// centre): leaving through it lowers the exit distance, entering through
+// it raises the entry distance
+inline void leaveThrough(const scalar along, const scalar gap, scalar& distance)
 {
-    const scalar along = direction & n;
     if (along > SMALL)
     {
-        distance = min(distance, max(((c - start) & n)/along, 0));
+        distance = min(distance, max(gap/along, 0));
     }
 }
 
 
-inline void enterThrough
-(
-    const point& c,
-    const vector& n,
-    const point& start,
-    const vector& direction,
-    scalar& distance
-)
+inline void enterThrough(const scalar along, const scalar gap, scalar& distance)
 {
-    const scalar along = direction & n;
     if (along < -SMALL)
     {
-        distance = max(distance, ((c - start) & n)/along);
+        distance = max(distance, gap/along);
     }
+}
+
+
+// The faces of a cell of the mesh as planes, read from the mesh as asked
+class meshCellPlanes
+{
+    const fvMesh& mesh_;
+    const label celli_;
+    const labelList& faceIds_;
+
+public:
+
+    meshCellPlanes(const fvMesh& mesh, const label celli)
+    :
+        mesh_(mesh),
+        celli_(celli),
+        faceIds_(mesh.cells()[celli])
+    {}
+
+    label size() const
+    {
+        return faceIds_.size();
+    }
+
+    const point& centre(const label i) const
+    {
+        return mesh_.faceCentres()[faceIds_[i]];
+    }
+
+    vector normal(const label i) const
+    {
+        return cellFaceGeometry::outwardNormal(mesh_, celli_, faceIds_[i]);
+    }
+};
+
+
+// The faces of a cell given as planes (cellFaceGeometry::faces)
+class givenCellPlanes
+{
+    const cellFaceGeometry::faces& cell_;
+
+public:
+
+    explicit givenCellPlanes(const cellFaceGeometry::faces& cell)
+    :
+        cell_(cell)
+    {}
+
+    label size() const
+    {
+        return cell_.centres.size();
+    }
+
+    const point& centre(const label i) const
+    {
+        return cell_.centres[i];
+    }
+
+    const vector& normal(const label i) const
+    {
+        return cell_.normals[i];
+    }
+};
+
+
+// The distance from the initial one after the ray from start along
+// direction crossed (leaveThrough or enterThrough) each face plane of the
+// cell in turn
+template<class CellPlanes, class Crossing>
+scalar distanceThroughFaces
+(
+    const CellPlanes& cell,
+    const point& start,
+    const vector& direction,
+    scalar distance,
+    const Crossing& crossing
+)
+{
+    for (label i = 0; i < cell.size(); ++i)
+    {
+        const vector n = cell.normal(i);
+        crossing(direction & n, (cell.centre(i) - start) & n, distance);
+    }
+    return distance;
 }
 
 } // End anonymous namespace
@@ -95,19 +165,10 @@ Foam::scalar Foam::cellFaceGeometry::exitDistance
     const vector& direction
 )
 {
-    scalar distance = GREAT;
-    for (const label facei : mesh.cells()[celli])
-    {
-        leaveThrough
-        (
-            mesh.faceCentres()[facei],
-            outwardNormal(mesh, celli, facei),
-            start,
-            direction,
-            distance
-        );
-    }
-    return distance;
+    return distanceThroughFaces
+    (
+        meshCellPlanes(mesh, celli), start, direction, GREAT, leaveThrough
+    );
 }
 
 
@@ -119,19 +180,10 @@ Foam::scalar Foam::cellFaceGeometry::entryDistance
     const vector& direction
 )
 {
-    scalar distance = 0;
-    for (const label facei : mesh.cells()[celli])
-    {
-        enterThrough
-        (
-            mesh.faceCentres()[facei],
-            outwardNormal(mesh, celli, facei),
-            start,
-            direction,
-            distance
-        );
-    }
-    return distance;
+    return distanceThroughFaces
+    (
+        meshCellPlanes(mesh, celli), start, direction, 0, enterThrough
+    );
 }
 
 
@@ -153,13 +205,10 @@ Foam::scalar Foam::cellFaceGeometry::distanceToProcessorFace
         for (const label facei : mesh.cells()[celll])
         {
             const scalar before = distance;
+            const vector n = outwardNormal(mesh, celll, facei);
             leaveThrough
             (
-                mesh.faceCentres()[facei],
-                outwardNormal(mesh, celll, facei),
-                start,
-                direction,
-                distance
+                direction & n, (mesh.faceCentres()[facei] - start) & n, distance
             );
             if (distance < before)
             {
@@ -209,12 +258,10 @@ Foam::scalar Foam::cellFaceGeometry::exitDistance
     const vector& direction
 )
 {
-    scalar distance = GREAT;
-    forAll(cell.centres, i)
-    {
-        leaveThrough(cell.centres[i], cell.normals[i], start, direction, distance);
-    }
-    return distance;
+    return distanceThroughFaces
+    (
+        givenCellPlanes(cell), start, direction, GREAT, leaveThrough
+    );
 }
 
 
@@ -225,12 +272,10 @@ Foam::scalar Foam::cellFaceGeometry::entryDistance
     const vector& direction
 )
 {
-    scalar distance = 0;
-    forAll(cell.centres, i)
-    {
-        enterThrough(cell.centres[i], cell.normals[i], start, direction, distance);
-    }
-    return distance;
+    return distanceThroughFaces
+    (
+        givenCellPlanes(cell), start, direction, 0, enterThrough
+    );
 }
 
 

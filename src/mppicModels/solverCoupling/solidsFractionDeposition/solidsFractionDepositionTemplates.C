@@ -4,21 +4,17 @@
 \*---------------------------------------------------------------------------*/
 
 #include "solidsFractionDeposition.H"
-#include "tetIndices.H"
-#include "polyMeshTetDecomposition.H"
-#include "AveragingMethod.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-Foam::tmp<Foam::scalarField>
-Foam::solidsFractionDeposition::cellFraction(const CloudType& cloud) const
+Foam::autoPtr<Foam::AveragingMethod<Foam::scalar>>
+Foam::solidsFractionDeposition::averagedSolidsFraction
+(
+    const CloudType& cloud,
+    const word& name
+)
 {
-    if (method_ == method::cell)
-    {
-        return tmp<scalarField>::New(cloud.theta()().primitiveField());
-    }
-
     const fvMesh& mesh = cloud.mesh();
 
     autoPtr<AveragingMethod<scalar>> deposit
@@ -27,7 +23,7 @@ Foam::solidsFractionDeposition::cellFraction(const CloudType& cloud) const
         (
             IOobject
             (
-                cloud.name() + ":solidsFractionDeposition",
+                name,
                 mesh.time().timeName(),
                 mesh,
                 IOobject::NO_READ,
@@ -50,7 +46,26 @@ Foam::solidsFractionDeposition::cellFraction(const CloudType& cloud) const
     }
     deposit->average();
 
-    return tmp<scalarField>::New(deposit->primitiveField());
+    return deposit;
+}
+
+
+template<class CloudType>
+Foam::tmp<Foam::scalarField>
+Foam::solidsFractionDeposition::cellFraction(const CloudType& cloud) const
+{
+    if (method_ == method::cell)
+    {
+        return tmp<scalarField>::New(cloud.theta()().primitiveField());
+    }
+
+    return tmp<scalarField>::New
+    (
+        averagedSolidsFraction
+        (
+            cloud, cloud.name() + ":solidsFractionDeposition"
+        )->primitiveField()
+    );
 }
 
 
