@@ -25,10 +25,26 @@
 # own places: the 27-cell blocks across processor faces), the same checks
 # but kinematicCloud:UMean (measured when written: 2 ranks alpha.air
 # 1.2e-14, U.air 6.8e-12; 16 ranks 1.6e-14, 8.0e-12).
+# parallelLinearHat <runDir> cornerNodeGradient (parallelCornerNodeGradient.sh):
+# as cornerNodes, with MFiX-PIC's rules through the cell corners (impulse
+# cornerNodeGradient, reflection component, no capacity limit, no held
+# packs: the gradient reads the kernel's ghost values), the same checks.
 #------------------------------------------------------------------------------
-runDir="${1:?usage: parallelLinearHat.sh <runDir> [cornerNodes]}"
+runDir="${1:?usage: parallelLinearHat.sh <runDir> [cornerNodes|cornerNodeGradient]}"
 method="${2:-linearHat}"
+case "$method" in
+    (linearHat|cornerNodes|cornerNodeGradient) ;;
+    (*) echo "unknown method $method"; exit 1 ;;
+esac
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
+
+# editEntries <file> <sed script> -E <pattern> <count>: edit, then stop
+# unless the pattern matches count lines
+editEntries()
+{
+    sed -i "$2" "$1"
+    [ "$(grep -c -E "$4" "$1")" = "$5" ] || { echo "$1: $4 not set"; exit 1; }
+}
 
 for mode in serial parallel parallel16
 do
@@ -36,20 +52,19 @@ do
     copyTutorial validation/uniformFluidization "$dir"
     setEntry "$dir" system/controlDict writePrecision 15
     # (foamDictionary cannot address the keys U.air and alpha.air)
-    if [ "$method" = cornerNodes ]
+    cloudProps="$dir/constant/kinematicCloudProperties"
+    if [ "$method" = linearHat ]
     then
-        sed -i -e 's/^solidsFractionFrom .*/solidsFractionFrom  averaging;/' \
-            -e 's/^\( *averagingMethod \+\)basic;/\1cornerNodes;/' \
-            "$dir/constant/kinematicCloudProperties"
-        grep -q "averagingMethod cornerNodes;" \
-            "$dir/constant/kinematicCloudProperties" \
-            || { echo "averagingMethod not set"; exit 1; }
+        editEntries "$cloudProps" 's/^\( *\(U\|alpha\)\.air  *\)cell;/\1linearHat;/' \
+            -E '(U|alpha)\.air +linearHat;' 2
     else
-        sed -i 's/^\( *\(U\|alpha\)\.air  *\)cell;/\1linearHat;/' \
-            "$dir/constant/kinematicCloudProperties"
-        [ "$(grep -c -E '(U|alpha)\.air +linearHat;' \
-            "$dir/constant/kinematicCloudProperties")" = 2 ] \
-            || { echo "interpolationSchemes not set"; exit 1; }
+        editEntries "$cloudProps" 's/^solidsFractionFrom .*/solidsFractionFrom  averaging;/; s/^\( *averagingMethod \+\)basic;/\1cornerNodes;/' \
+            -E 'averagingMethod cornerNodes;|solidsFractionFrom  averaging;' 2
+    fi
+    if [ "$method" = cornerNodeGradient ]
+    then
+        editEntries "$cloudProps" 's/^\( *conserveMomentum false;\)$/\1\n        impulse cornerNodeGradient;\n        reflection component;\n        capacityLimit false;\n        holdSupportedPacks false;/' \
+            -E 'impulse cornerNodeGradient;|reflection component;|capacityLimit false;|holdSupportedPacks false;' 4
     fi
     # (foamDictionary cannot address the regular-expression key "U.air.*"
     # and would expand pFinal's $p)
@@ -72,7 +87,7 @@ grep -q '(2 4 2)' "$runDir/parallel16/system/decomposeParDict" \
 
 packing="-packing mfixSnider" fields="alpha.air U.air kinematicCloud:UMean"
 # (coloringFunction keeps no mean solids velocity field)
-[ "$method" = cornerNodes ] && packing="" fields="alpha.air U.air"
+[ "$method" != linearHat ] && packing="" fields="alpha.air U.air"
 runAllrun "$runDir/serial" 0.01 $packing || exit 1
 export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1
 status=0

@@ -114,38 +114,33 @@ vector nodeGradient
 
     vector grad(Zero);
 
-    // x: nodes at faces ci, ci + 1 (along x) and between rows cj - 1|cj,
-    // cj|cj + 1 (a row beyond the boundary mirrored)
-    for (label a = 0; a < 2; ++a)
+    // Along dir (x: 0, y: 1): nodes at the faces c, c + 1 of the cell's
+    // index c along dir, each between the rows (columns) t - 1|t and
+    // t|t + 1 across it (a row beyond the boundary mirrored)
+    const FixedList<label, 2> cell({ci, cj});
+    const FixedList<scalar, 2> local({xi, eta});
+    const FixedList<label, 2> nAcross({ny, nx});
+    for (label dir = 0; dir < 2; ++dir)
     {
-        for (label b = 0; b < 2; ++b)
+        const label t = cell[1 - dir];
+        for (label a = 0; a < 2; ++a)
         {
-            const label r0 = cj - 1 + b, r1 = cj + b;
-            const label m0 = r0 < 0 ? r1 : r0, m1 = r1 >= ny ? r0 : r1;
-            const scalar node =
-                0.5
-               *(
-                    faceDifference(chi, beyond, 0, ci + a, m0)
-                  + faceDifference(chi, beyond, 0, ci + a, m1)
-                );
-            grad[0] += (a ? xi : 1 - xi)*(b ? eta : 1 - eta)*node;
-        }
-    }
-
-    // y: nodes at faces cj, cj + 1 and between columns
-    for (label a = 0; a < 2; ++a)
-    {
-        for (label b = 0; b < 2; ++b)
-        {
-            const label c0 = ci - 1 + a, c1 = ci + a;
-            const label m0 = c0 < 0 ? c1 : c0, m1 = c1 >= nx ? c0 : c1;
-            const scalar node =
-                0.5
-               *(
-                    faceDifference(chi, beyond, 1, cj + b, m0)
-                  + faceDifference(chi, beyond, 1, cj + b, m1)
-                );
-            grad[1] += (a ? xi : 1 - xi)*(b ? eta : 1 - eta)*node;
+            for (label b = 0; b < 2; ++b)
+            {
+                const label r0 = t - 1 + b, r1 = t + b;
+                const label m0 = r0 < 0 ? r1 : r0;
+                const label m1 = r1 >= nAcross[dir] ? r0 : r1;
+                const scalar node =
+                    0.5
+                   *(
+                        faceDifference(chi, beyond, dir, cell[dir] + a, m0)
+                      + faceDifference(chi, beyond, dir, cell[dir] + a, m1)
+                    );
+                // a: the node's side along dir, b: across it
+                const scalar along = a ? local[dir] : 1 - local[dir];
+                const scalar across = b ? local[1 - dir] : 1 - local[1 - dir];
+                grad[dir] += along*across*node;
+            }
         }
     }
 
