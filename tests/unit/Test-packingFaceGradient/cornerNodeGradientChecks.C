@@ -57,7 +57,12 @@ Description
 using namespace Foam::unitTest;
 
 // (Test-packingFaceGradient.C)
-void checkVector(const string& what, const vector& value, const vector& expected);
+void checkVector
+(
+    const string& what,
+    const vector& value,
+    const vector& expected
+);
 
 namespace
 {
@@ -84,7 +89,10 @@ scalar faceDifference
 {
     const label n = dir == 0 ? nx : ny;
     const scalar h = dir == 0 ? hx : hy;
-    auto at = [&](const label s) { return dir == 0 ? cellOf(s, t) : cellOf(t, s); };
+    auto at = [&](const label s)
+    {
+        return dir == 0 ? cellOf(s, t) : cellOf(t, s);
+    };
 
     if (f == 0)
     {

@@ -15,8 +15,9 @@ Description
     In cell terms (as cornerNodeWeights for the deposition): component i
     at a point of cell c is
 
-        sum over the transverse steps s_j, s_k in {-1, 0, 1}
-            W_j(s_j) W_k(s_k) [ (1 - a_i)/2 D_i^-(c + s) + (1 + a_i)/2 D_i^+(c + s) ]
+        sum over the transverse steps s_j, s_k in {-1, 0, 1} of
+            W_j(s_j) W_k(s_k)
+           *[ (1 - a_i)/2 D_i^-(c + s) + (1 + a_i)/2 D_i^+(c + s) ]
 
     with W(-1) = (1 - a)/4, W(0) = 1/2, W(+1) = (1 + a)/4, a the point's
     place between the cell's two faces along each direction, and D_i^+-
