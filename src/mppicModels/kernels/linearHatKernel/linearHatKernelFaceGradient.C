@@ -33,8 +33,12 @@ Description
     face value, this takes the near face's value twice. The distances and
     normals are those of the point's own cell, so the neighbours' faces are
     taken at its spacing (exact on a uniform hexahedral mesh, as MFiX's
-    Cartesian grid). A non-hexahedral cell has no corner-node form: zero
-    (the caller uses its own cell's faces).
+    Cartesian grid). A face has no cell across where the block's step
+    stays in the cell; so a cyclic direction one cell across is taken for
+    a boundary. A non-hexahedral cell has no corner-node form: zero (the
+    caller uses its own cell's faces). Cost per parcel: 27 block cells,
+    four values each; the face differences are not cached per cell, as the
+    ghosts' would need a second exchange.
 
 \*---------------------------------------------------------------------------*/
 
@@ -66,26 +70,23 @@ Foam::vector Foam::linearHatKernel::cornerNodeFaceGradient
     // the weights of the two faces, their outward normals over the centre
     // distance across them (twice the distance to the face beyond a
     // boundary)
-    FixedList<FixedList<scalar, 3>, 3> along;
+    FixedList<scalar, 3> places;
+    const FixedList<FixedList<scalar, 3>, 3> along =
+        cornerNodeSteps(offset, towardOwnFace_, firstFace, places);
     FixedList<scalar, 3> plusWeight;
     FixedList<vector, 3> plusDelta;
     FixedList<vector, 3> minusDelta;
 
     for (label i = 0; i < 3; ++i)
     {
-        const vector& plusOwn = towardOwnFace_[firstFace + 2*i];
-        const vector& minusOwn = towardOwnFace_[firstFace + 2*i + 1];
-        const scalar a = placeBetweenFaces(offset, plusOwn, minusOwn);
-
-        along[i][0] = 0.25*(1 - a);
-        along[i][1] = 0.5;
-        along[i][2] = 0.25*(1 + a);
-        plusWeight[i] = 0.5*(1 + a);
+        plusWeight[i] = 0.5*(1 + places[i]);
 
         const vector& plus = towardFace_[firstFace + 2*i];
         const vector& minus = towardFace_[firstFace + 2*i + 1];
-        plusDelta[i] = magSqr(plus) > 0 ? plus : 0.5*plusOwn;
-        minusDelta[i] = magSqr(minus) > 0 ? minus : 0.5*minusOwn;
+        plusDelta[i] =
+            magSqr(plus) > 0 ? plus : 0.5*towardOwnFace_[firstFace + 2*i];
+        minusDelta[i] =
+            magSqr(minus) > 0 ? minus : 0.5*towardOwnFace_[firstFace + 2*i + 1];
     }
 
     vector grad(Zero);

@@ -78,20 +78,9 @@ void Foam::linearHatKernel::evaluate
     // face of side +), splits it between the two corner nodes, (1 + a)/2
     // and (1 - a)/2; each node's share goes half to this cell and half to
     // the cell across, whose mean of corners it also enters
-    FixedList<FixedList<scalar, 3>, 3> along;
-    for (label i = 0; i < 3; ++i)
-    {
-        const scalar a =
-            placeBetweenFaces
-            (
-                offset,
-                towardOwnFace_[firstFace + 2*i],
-                towardOwnFace_[firstFace + 2*i + 1]
-            );
-        along[i][0] = 0.25*(1 - a);
-        along[i][1] = 0.5;
-        along[i][2] = 0.25*(1 + a);
-    }
+    FixedList<scalar, 3> places;
+    const FixedList<FixedList<scalar, 3>, 3> along =
+        cornerNodeSteps(offset, towardOwnFace_, firstFace, places);
 
     const label firstEntry = blockSize*celli;
     for (label entry = 0; entry < blockSize; ++entry)
