@@ -21,6 +21,12 @@ Description
           y case 1: -0.2 - 0.5*(-1 + 0.2) = 0.2, then Case 1a
           (d*g < 0, v*g > 0): -0.5*(-1) = 0.5 -> (1.75 0.5 0)
       the same with case1a off: (1.75 0.2 0)
+      round-off: dV (100 1e-11 0), U (-2 -0.3 0), us (0.5 0.4 0): x head
+          on 1.75; y (1e-13 of x, at most componentRoundOff 1e-9 of it)
+          counts as zero -> -0.3 unchanged, where its sign would give head
+          on 0.4 - 0.5*(-0.3 - 0.4) = 0.75, then Case 1a (d*g < 0,
+          v*g > 0): -0.5*(-0.3) = 0.15; with dV (100 1e-4 0) (1e-6 of x, a
+          real component) y takes those rules: (1.75 0.15 0)
 
 \*---------------------------------------------------------------------------*/
 
@@ -89,6 +95,24 @@ void testComponentReflection()
             vector(-2, -1, 0), vector(0.5, -0.2, 0), vector(1, 1, 0), g
         ),
         vector(1.75, 0.2, 0)
+    );
+    checkVector
+    (
+        "component: a round-off component counts as zero",
+        rules.correctedVelocity
+        (
+            vector(-2, -0.3, 0), vector(0.5, 0.4, 0), vector(100, 1e-11, 0), g
+        ),
+        vector(1.75, -0.3, 0)
+    );
+    checkVector
+    (
+        "component: a small real component is reflected",
+        rules.correctedVelocity
+        (
+            vector(-2, -0.3, 0), vector(0.5, 0.4, 0), vector(100, 1e-4, 0), g
+        ),
+        vector(1.75, 0.15, 0)
     );
 }
 

@@ -232,11 +232,16 @@ void Foam::LeanMPPICCloud<CloudType>::correctionPass
 
     nCorrected_ = returnReduce(this->size(), sumOp<label>());
 
-    Info<< "    correction pass: " << nCorrected_ << " of "
-        << returnReduce(n, sumOp<label>()) << " parcels" << endl;
-
     td.part() = parcelType::trackingData::tpCorrectTrack;
-    this->move(cloud, td, trackTime);
+    nCrossed_ = trackCorrections(cloud, td, trackTime);
+
+    Info<< "    correction pass: " << nCorrected_ << " of "
+        << returnReduce(n, sumOp<label>()) << " parcels";
+    if (Pstream::parRun())
+    {
+        Info<< ", " << nCrossed_ << " processor crossings";
+    }
+    Info<< endl;
 
     // Back in the stock order: the survivors of the pass (in their order),
     // the resting parcels in their places, then the parcels received.

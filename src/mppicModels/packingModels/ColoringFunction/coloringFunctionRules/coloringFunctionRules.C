@@ -116,10 +116,15 @@ Foam::vector Foam::coloringFunctionRules::correctedVelocity
 {
     if (reflection_ == reflectionType::component)
     {
+        // A component at round-off of the impulse is taken as none: on a
+        // mesh whose faces are axis-aligned to round-off it is noise,
+        // whose sign would reflect a velocity component at random
+        const scalar roundOff = componentRoundOff*cmptMax(cmptMag(impulse));
+
         vector Unew = U;
         for (direction k = 0; k < vector::nComponents; ++k)
         {
-            if (impulse[k] != 0)
+            if (mag(impulse[k]) > roundOff)
             {
                 Unew[k] =
                     componentVelocity
