@@ -6,6 +6,7 @@
 # with averagingMethod cornerNodes and coloringFunction as MFiX-PIC applies
 # it through the cell corners (impulse cornerNodeGradient, reflection
 # component, no capacity limit, no held packs): alpha.air and U.air within
-# 1e-9 of the serial run, the same parcel count and cloud mass.
+# 1e-9 of the serial run, the same parcel count and cloud mass, processor
+# crossings in the correction pass.
 #------------------------------------------------------------------------------
 exec "${0%/*}/parallelLinearHat.sh" "${1:?usage: parallelCornerNodeGradient.sh <runDir>}" cornerNodeGradient

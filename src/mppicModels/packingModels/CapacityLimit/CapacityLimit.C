@@ -107,6 +107,8 @@ Foam::boolList Foam::CapacityLimit<CloudType>::fullCells
 template<class CloudType>
 void Foam::CapacityLimit<CloudType>::beforeMotion(const CloudType& cloud)
 {
+    entries_.setExactTracks();
+
     if (!entries_.hasRecords())
     {
         entries_.recordCells(cloud, true);

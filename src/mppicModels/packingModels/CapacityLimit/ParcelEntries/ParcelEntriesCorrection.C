@@ -23,7 +23,8 @@ Foam::scalar Foam::ParcelEntries<CloudType>::trackLength
     // processor with its velocity scaled by the fraction of the step left,
     // 1 - f, f = d/L, so that of the rest of a track of length L it covers
     // (1 - f)^2 L, not (1 - f) L. For the parcel to end travel along its
-    // path, ask for L with d + (L - d)^2/L = travel
+    // path, ask for L with d + (L - d)^2/L = travel. (LeanMPPICCloud's own
+    // tracks cover L: its callers pass no processor face, exactTracks_)
     const scalar d = toProcessorFace;
     if (d <= 0 || d >= travel)
     {
@@ -101,7 +102,9 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
             trackLength
             (
                 backTravel,
-                here ? -1 : cellFaceGeometry::distanceToProcessorFace
+                here || exactTracks_
+              ? -1
+              : cellFaceGeometry::distanceToProcessorFace
                 (
                     mesh, celli, x, back
                 )
@@ -128,7 +131,7 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
             trackLength
             (
                 backTravel,
-                Pstream::parRun()
+                Pstream::parRun() && !exactTracks_
               ? cellFaceGeometry::distanceToProcessorFace(mesh, celli, x, back)
               : -1
             )/deltaT*back;

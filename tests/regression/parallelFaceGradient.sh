@@ -1,0 +1,12 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# parallelFaceGradient <runDir>
+# parallelLinearHat.sh's serial / 2 / 16-process comparison (20 steps of
+# uniformFluidization, gas solved to 1e-13) with the gas fraction deposited
+# with averagingMethod cornerNodes and coloringFunction with MFiX-PIC's
+# rules on the packing gradient from the cell's own faces (impulse
+# faceGradient, reflection component, no capacity limit, no held packs):
+# alpha.air and U.air within 1e-9 of the serial run, the same parcel count
+# and cloud mass, processor crossings in the correction pass.
+#------------------------------------------------------------------------------
+exec "${0%/*}/parallelLinearHat.sh" "${1:?usage: parallelFaceGradient.sh <runDir>}" faceGradient
