@@ -64,20 +64,6 @@ Foam::MppicDragForce<CloudType>::MppicDragForce
 {}
 
 
-template<class CloudType>
-Foam::MppicDragForce<CloudType>::MppicDragForce
-(
-    const MppicDragForce<CloudType>& df
-)
-:
-    ParticleForce<CloudType>(df),
-    feedback_(df.feedback_),
-    slipFrom_(df.slipFrom_),
-    cellMeanU_(df.cellMeanU_),
-    cellHasMean_(df.cellHasMean_)
-{}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
