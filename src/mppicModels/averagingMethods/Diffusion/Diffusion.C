@@ -57,18 +57,6 @@ Foam::AveragingMethods::Diffusion<Type>::Diffusion
 {}
 
 
-template<class Type>
-Foam::AveragingMethods::Diffusion<Type>::Diffusion
-(
-    const Diffusion<Type>& am
-)
-:
-    Basic<Type>(am),
-    smoother_(am.smoother_),
-    hasNewDeposits_(am.hasNewDeposits_)
-{}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class Type>

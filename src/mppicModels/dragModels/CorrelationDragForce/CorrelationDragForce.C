@@ -50,18 +50,6 @@ Foam::CorrelationDragForce<CloudType, Law>::CorrelationDragForce
 {}
 
 
-template<class CloudType, class Law>
-Foam::CorrelationDragForce<CloudType, Law>::CorrelationDragForce
-(
-    const CorrelationDragForce<CloudType, Law>& df
-)
-:
-    MppicDragForce<CloudType>(df),
-    law_(df.law_),
-    alphacPtr_(df.alphacPtr_)
-{}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType, class Law>

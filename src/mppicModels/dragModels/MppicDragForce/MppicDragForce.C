@@ -64,20 +64,6 @@ Foam::MppicDragForce<CloudType>::MppicDragForce
 {}
 
 
-template<class CloudType>
-Foam::MppicDragForce<CloudType>::MppicDragForce
-(
-    const MppicDragForce<CloudType>& df
-)
-:
-    ParticleForce<CloudType>(df),
-    feedback_(df.feedback_),
-    slipFrom_(df.slipFrom_),
-    cellMeanU_(df.cellMeanU_),
-    cellHasMean_(df.cellHasMean_)
-{}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -111,50 +97,6 @@ void Foam::MppicDragForce<CloudType>::cacheFields(const bool store)
             cellMeanU_[celli] /= cellMass[celli];
         }
     }
-}
-
-
-template<class CloudType>
-Foam::forceSuSp Foam::MppicDragForce<CloudType>::calcNonCoupled
-(
-    const typename CloudType::parcelType& p,
-    const typename CloudType::parcelType::trackingData& td,
-    const scalar dt,
-    const scalar mass,
-    const scalar Re,
-    const scalar muc
-) const
-{
-    // OpenFOAM integrates only the explicit part of non-coupled forces
-    // (KinematicParcel::calcVelocity): the drag as Su = Sp*(u_g - u_p)
-    if (feedback_)
-    {
-        return forceSuSp(Zero, 0);
-    }
-    return forceSuSp(Sp(p, td, mass, muc)*(td.Uc() - solidsVelocity(p)), 0);
-}
-
-
-template<class CloudType>
-Foam::forceSuSp Foam::MppicDragForce<CloudType>::calcCoupled
-(
-    const typename CloudType::parcelType& p,
-    const typename CloudType::parcelType::trackingData& td,
-    const scalar dt,
-    const scalar mass,
-    const scalar Re,
-    const scalar muc
-) const
-{
-    if (!feedback_)
-    {
-        return forceSuSp(Zero, 0);
-    }
-
-    // F = Su + Sp*(u_g - u_p) = Sp*(u_g - u_s): with slipFrom parcel
-    // u_s = u_p and Su = 0
-    const scalar Spp = Sp(p, td, mass, muc);
-    return forceSuSp(Spp*(p.U() - solidsVelocity(p)), Spp);
 }
 
 

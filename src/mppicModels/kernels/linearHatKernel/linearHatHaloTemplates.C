@@ -6,6 +6,50 @@
 #include "PstreamBuffers.H"
 #include "UIndirectList.H"
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+template<class Type, class CombineOp>
+void Foam::linearHatHalo::exchange
+(
+    const labelListList& sendAt,
+    const UList<Type>& sendValues,
+    const labelListList& receiveAt,
+    UList<Type>& receiveValues,
+    const CombineOp& cop
+)
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(sendAt, proci)
+    {
+        if (sendAt[proci].size())
+        {
+            UOPstream toNbr(proci, buffers);
+            toNbr << List<Type>(UIndirectList<Type>(sendValues, sendAt[proci]));
+        }
+    }
+    buffers.finishedSends();
+
+    forAll(receiveAt, proci)
+    {
+        if (receiveAt[proci].size())
+        {
+            UIPstream fromNbr(proci, buffers);
+            const List<Type> received(fromNbr);
+            const labelList& entries = receiveAt[proci];
+            forAll(received, i)
+            {
+                cop(receiveValues[entries[i]], received[i]);
+            }
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class Type>
@@ -16,32 +60,7 @@ void Foam::linearHatHalo::ghostValues
 ) const
 {
     ghosts.setSize(size());
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    forAll(sendCells_, proci)
-    {
-        if (sendCells_[proci].size())
-        {
-            UOPstream toNbr(proci, buffers);
-            const labelList& cells = sendCells_[proci];
-            toNbr << List<Type>(UIndirectList<Type>(cellValues, cells));
-        }
-    }
-    buffers.finishedSends();
-
-    forAll(slotsFrom_, proci)
-    {
-        if (slotsFrom_[proci].size())
-        {
-            UIPstream fromNbr(proci, buffers);
-            const List<Type> received(fromNbr);
-            UIndirectList<Type>(ghosts, slotsFrom_[proci]) = received;
-        }
-    }
+    exchange(sendCells_, cellValues, slotsFrom_, ghosts, eqOp<Type>());
 }
 
 
@@ -52,37 +71,7 @@ void Foam::linearHatHalo::addGhostDeposits
     UList<Type>& ghosts
 ) const
 {
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    forAll(slotsFrom_, proci)
-    {
-        if (slotsFrom_[proci].size())
-        {
-            UOPstream toOwner(proci, buffers);
-            toOwner
-                << List<Type>(UIndirectList<Type>(ghosts, slotsFrom_[proci]));
-        }
-    }
-    buffers.finishedSends();
-
-    forAll(sendCells_, proci)
-    {
-        if (sendCells_[proci].size())
-        {
-            UIPstream fromNbr(proci, buffers);
-            const List<Type> received(fromNbr);
-            const labelList& cells = sendCells_[proci];
-            forAll(received, i)
-            {
-                cellValues[cells[i]] += received[i];
-            }
-        }
-    }
-
+    exchange(slotsFrom_, ghosts, sendCells_, cellValues, plusEqOp<Type>());
     ghosts = Zero;
 }
 

@@ -21,18 +21,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     // The base's dictionary constructor would require a stock
     // particleStressModel entry, which these models do not use
     PackingModel<CloudType>(owner),
-    coeffs_(dict.subDict(type + "Coeffs")),
-    volumeAverage_(nullptr),
-    uAverage_(nullptr),
-    cellNeighbours_(nullptr),
-    packingField_(nullptr),
-    cellValues_(),
-    cellUMean_(),
-    coupledValues_(),
-    coupledUMean_(),
-    cellAddedMomentum_(),
-    addedMomentumStep_(-1),
-    kernel_(nullptr)
+    coeffs_(dict.subDict(type + "Coeffs"))
 {}
 
 
@@ -43,18 +32,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
 )
 :
     PackingModel<CloudType>(cm),
-    coeffs_(cm.coeffs_),
-    volumeAverage_(nullptr),
-    uAverage_(nullptr),
-    cellNeighbours_(nullptr),
-    packingField_(nullptr),
-    cellValues_(),
-    cellUMean_(),
-    coupledValues_(),
-    coupledUMean_(),
-    cellAddedMomentum_(),
-    addedMomentumStep_(-1),
-    kernel_(nullptr)
+    coeffs_(cm.coeffs_)
 {}
 
 

@@ -8,14 +8,7 @@
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace prescribedGasFlows
-{
-    defineTypeNameAndDebug(uniform, 0);
-    addToRunTimeSelectionTable(prescribedGasFlow, uniform, dictionary);
-}
-}
+makePrescribedGasFlow(uniform);
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

@@ -10,14 +10,7 @@
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace prescribedGasFlows
-{
-    defineTypeNameAndDebug(vortex, 0);
-    addToRunTimeSelectionTable(prescribedGasFlow, vortex, dictionary);
-}
-}
+makePrescribedGasFlow(vortex);
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
