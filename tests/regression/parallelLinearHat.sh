@@ -35,8 +35,8 @@
 # cross processor faces in the correction pass, which both runs require of
 # the 16-process run's log (crossings counted by LeanMPPICCloud). Measured
 # when written (issue 21, ninth pass): cornerNodeGradient 2 ranks alpha.air
-# 9e-15, U.air 1.5e-11; faceGradient (2 1 1) 8.1e-15, 8.3e-12, (2 4 2)
-# 1.1e-14, 7.5e-12. With v1912's correction tracks (a parcel that crossed
+# 6.0e-15, U.air 1.3e-11, 16 ranks 9.0e-15, 1.2e-11; faceGradient 2 ranks
+# 8.1e-15, 8.3e-12, 16 ranks 1.1e-14, 7.5e-12. With v1912's correction tracks (a parcel that crossed
 # moved (1-f)^2 of its correction instead of (1-f)) cornerNodeGradient on
 # (1 4 1) parted by 2.0e-5, 8.2e-4; with the sign of round-off impulse
 # components deciding MFiX's rules, faceGradient on (2 1 1) by 1.5e-3,
@@ -91,13 +91,11 @@ do
         -e 's/tolerance .*;/tolerance       1e-13;/' -e '}' \
         "$dir/system/fvSolution"
 done
-# The wide decomposition: 16 (2 4 2)
-wideN=16 wideDims="2 4 2"
-sed -i -e "s/^numberOfSubdomains .*/numberOfSubdomains $wideN;/" \
-    -e "s/^\( *n  *\)(.*);/\1($wideDims);/" \
+sed -i -e 's/^numberOfSubdomains .*/numberOfSubdomains 16;/' \
+    -e 's/^\( *n  *\)(.*);/\1(2 4 2);/' \
     "$runDir/parallel16/system/decomposeParDict"
-grep -q "($wideDims)" "$runDir/parallel16/system/decomposeParDict" \
-    || { echo "decomposeParDict not set to $wideN"; exit 1; }
+grep -q '(2 4 2)' "$runDir/parallel16/system/decomposeParDict" \
+    || { echo "decomposeParDict not set to 16"; exit 1; }
 
 packing="-packing mfixSnider" fields="alpha.air U.air kinematicCloud:UMean"
 # (coloringFunction keeps no mean solids velocity field)

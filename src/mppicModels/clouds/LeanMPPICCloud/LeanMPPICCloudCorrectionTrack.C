@@ -12,6 +12,7 @@ Description
 #include "LeanMPPICCloud.H"
 #include "processorPolyPatch.H"
 #include "PstreamBuffers.H"
+#include "DynamicList.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -70,9 +71,12 @@ Foam::label Foam::LeanMPPICCloud<CloudType>::trackCorrections
     const labelList& processorPatches = meshData.processorPatches();
     const labelList& patchOnNeighbour = meshData.processorPatchNeighbours();
 
+    // The parcels to track in this round: all, then those that arrived
+    DynamicList<parcelType*> toTrack(this->size());
     for (parcelType& p : *this)
     {
         p.stepFraction() = 0;
+        toTrack.append(&p);
     }
 
     label nCrossed = 0;
@@ -81,15 +85,16 @@ Foam::label Foam::LeanMPPICCloud<CloudType>::trackCorrections
 
     // Rounds: every parcel tracks on until it ends its step, leaves the
     // domain or reaches a processor boundary; the last go to the
-    // neighbour, which goes on with them in the next round. Parcels that
-    // ended their step are visited again and do not move.
+    // neighbour, which goes on with them in the next round
     while (true)
     {
         List<IDLList<parcelType>> leaving(neighbours.size());
         List<DynamicList<label>> arrivalPatches(neighbours.size());
 
-        for (parcelType& p : *this)
+        for (parcelType* pPtr : toTrack)
         {
+            parcelType& p = *pPtr;
+
             if (!correctionTrack(p, cloud, td, trackTime))
             {
                 this->deleteParticle(p);
@@ -111,6 +116,8 @@ Foam::label Foam::LeanMPPICCloud<CloudType>::trackCorrections
                 ++nCrossed;
             }
         }
+
+        toTrack.clear();
 
         if (!Pstream::parRun())
         {
@@ -161,7 +168,8 @@ Foam::label Foam::LeanMPPICCloud<CloudType>::trackCorrections
                         processorPatches[arrivals[k++]],
                         td
                     );
-                    this->addParticle(arrived.remove(&p));
+                    toTrack.append(arrived.remove(&p));
+                    this->addParticle(toTrack.last());
                 }
             }
         }
