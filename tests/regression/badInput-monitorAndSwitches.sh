@@ -1,6 +1,8 @@
 #!/bin/bash
 # badInput-monitorAndSwitches <runDir>: a packingMonitor naming a cloud that
 # does not exist, one with closePackFraction 1.5, and coloringFunction with
+# writePackingForce true with writeInterval 10 and with writeControl
+# runTime (the field sums every step), and coloringFunction with
 # case1a maybe -> FatalIOError naming the keyword (and the range), exit
 # status 1, no crash (mppicPimpleFoam); likewise capacityLimit perhaps and
 # solidsFractionFrom maybe (the message lists cell and averaging); the
@@ -21,6 +23,16 @@ setEntry "$case" system/controlDict functions/monitor \
     "{ type packingMonitor; libs (\"libmppicModels.so\"); closePackFraction 1.5; }"
 runBroken "$case" mppicPimpleFoam
 check fatal "$case/log.broken" $rc "closePackFraction" "1.5" "(0, 1)" || status=1
+
+setEntry "$case" system/controlDict functions/monitor \
+    "{ type packingMonitor; libs (\"libmppicModels.so\"); writePackingForce true; writeInterval 10; }"
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "writeInterval" "10" "allowed: 1" || status=1
+
+setEntry "$case" system/controlDict functions/monitor \
+    "{ type packingMonitor; libs (\"libmppicModels.so\"); writePackingForce true; writeControl runTime; writeInterval 0.1; }"
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "writeControl" "runTime" "timeStep" || status=1
 
 foamDictionary "$case/system/controlDict" -entry functions/monitor -remove > /dev/null
 setEntry "$case" constant/kinematicCloudProperties \

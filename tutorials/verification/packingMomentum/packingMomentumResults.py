@@ -13,6 +13,12 @@ pack takes the opposite impulse and P stays P0 to round-off while the
 collisions (e1 = 0.5) remove kinetic energy; without it, P changes by the
 monitor's packing momentum summed over the steps.
 
+The monitor's field packingForce (writePackingForce, written at 0.02 and
+0.04 s) times the cell volume (blockMeshDict: 0.04*0.04*0.005 m3 in 8*8*1
+cells, 1.25e-7 m3) and the 0.02 s since the previous written time, summed
+over the cells, is the monitor's packing momentum summed over the steps of
+that interval.
+
     ./packingMomentumResults.py [--check]
 --check exits 1 when the run's form (conserveMomentum from the cloud
 properties) does not meet these statements.
@@ -30,6 +36,8 @@ import mppicPost as post  # noqa: E402 (tutorials/lib)
 
 P0 = (0.15*0.04*0.01*0.005*2500*0.1, -0.15*0.04*0.01*0.005*2500*0.5, 0.0)
 CLOSE_PACK = 0.6
+CELL_VOLUME = 0.04*0.04*0.005/(8*8*1)
+FIELD_TIMES = ("0.02", "0.04")
 
 
 def vector(text):
@@ -51,7 +59,27 @@ def read_log(path="log.mppicPimpleFoam"):
 def read_monitor(path="postProcessing/packingMonitor/0/packingMonitor.dat"):
     rows = post.read_table(path)
     packing = [r[8:11] for r in rows]
-    return packing, max(r[4] for r in rows)
+    return packing, max(r[4] for r in rows), rows
+
+
+def field_momentum(rows):
+    """For each written time of packingForce: (sum over cells of the field
+    times the cell volume and the interval, the monitor's rows summed over
+    the interval's steps), x, y and z."""
+    out = []
+    start = 0.0
+    for name in FIELD_TIMES:
+        end = float(name)
+        force = post.internal_field(os.path.join(name, "packingForce"))
+        if not isinstance(force, list):
+            force = [(force,)*3]*64
+        field = [sum(f[i] for f in force)*CELL_VOLUME*(end - start)
+                 for i in range(3)]
+        steps = [r for r in rows if start + 1e-9 < r[0] <= end + 1e-9]
+        monitor = [sum(r[8 + i] for r in steps) for i in range(3)]
+        out.append((name, field, monitor))
+        start = end
+    return out
 
 
 def conserve_setting(path="constant/kinematicCloudProperties"):
@@ -65,7 +93,7 @@ def norm(v):
 def main(argv):
     conserve = conserve_setting()
     momentum, energy = read_log()
-    packing, max_alpha = read_monitor()
+    packing, max_alpha, rows = read_monitor()
     scale = norm(P0)
 
     # The first step injects; the packing of step k changes P(k-1) to P(k)
@@ -76,6 +104,9 @@ def main(argv):
     mismatch = norm([a - b for a, b in zip(change, summed)])/scale
     initial_error = norm([a - b for a, b in zip(momentum[0], P0)])/scale
     energy_ratio = energy[-1]/energy[0]
+    fields = field_momentum(rows)
+    field_mismatch = max(norm([a - b for a, b in zip(f, m)])
+                         for _, f, m in fields)/scale
 
     lines = [
         "conserveMomentum               %s" % ("true" if conserve else "false"),
@@ -88,6 +119,11 @@ def main(argv):
         "|dP - summed|/|P0|             %.3e" % mismatch,
         "final/initial kinetic energy   %.4f" % energy_ratio,
         "max cell solids fraction       %.15g" % max_alpha,
+    ] + [
+        "packingForce*V*dt at %s s     (%.6e %.6e %.6e)" % ((n,) + tuple(f))
+        + "; monitor (%.6e %.6e %.6e)" % tuple(m) for n, f, m in fields
+    ] + [
+        "max |field - monitor|/|P0|     %.3e" % field_mismatch,
     ]
     open("packingMomentum.txt", "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
@@ -99,6 +135,8 @@ def main(argv):
         (initial_error < 1e-12, "initial momentum equals m_layer*U0"),
         (mismatch < 1e-10, "momentum change equals the monitor's sum"),
         (max_alpha <= CLOSE_PACK*(1 + 1e-12), "cells stay at close pack"),
+        (field_mismatch < 1e-10, "packingForce field equals the monitor's"
+         " sum over each written interval"),
     ]
     if conserve:
         checks += [

@@ -7,6 +7,8 @@
 #include "solidsFractionDeposition.H"
 #include "MfixPackingModel.H"
 #include "wallPolyPatch.H"
+#include "volFields.H"
+#include "extrapolatedCalculatedFvPatchFields.H"
 #include "boundedCoefficient.H"
 #include "addToRunTimeSelectionTable.H"
 #include "packingMonitorTemplates.C"
@@ -113,6 +115,89 @@ void Foam::functionObjects::packingMonitor::markWallCells()
 }
 
 
+bool Foam::functionObjects::packingMonitor::readWritePackingForce
+(
+    const dictionary& dict
+) const
+{
+    const bool wanted = dict.lookupOrDefault<bool>("writePackingForce", false);
+    if (!wanted)
+    {
+        return false;
+    }
+
+    // The field sums every step's momentum: the monitor must see each step
+    const word control =
+        dict.lookupOrDefault<word>("writeControl", "timeStep");
+    if (control != "timeStep")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": writePackingForce true"
+            << " needs the monitor at every time step, but keyword"
+            << " writeControl is " << control << "; allowed: timeStep"
+            << exit(FatalIOError);
+    }
+
+    const scalar interval = dict.lookupOrDefault<scalar>("writeInterval", 1);
+    if (interval != 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": writePackingForce true"
+            << " needs the monitor at every time step, but keyword"
+            << " writeInterval is " << interval << "; allowed: 1"
+            << exit(FatalIOError);
+    }
+
+    return true;
+}
+
+
+void Foam::functionObjects::packingMonitor::sumPackingForce()
+{
+    const tmp<vectorField> tmomentum
+    (
+        cloudAs<basicKinematicMPPICCloud>()
+      ? cellPackingMomentum(*cloudAs<basicKinematicMPPICCloud>())
+      : cellPackingMomentum(*cloudAs<basicReactingMPPICCloud>())
+    );
+
+    if (addedMomentum_.size() != mesh_.nCells())
+    {
+        addedMomentum_.setSize(mesh_.nCells());
+        addedMomentum_ = Zero;
+        addedTime_ = 0;
+    }
+    addedMomentum_ += tmomentum();
+    addedTime_ += time_.deltaTValue();
+
+    if (!time_.writeTime())
+    {
+        return;
+    }
+
+    volVectorField packingForce
+    (
+        IOobject
+        (
+            "packingForce",
+            time_.timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh_,
+        dimensionedVector(dimForce/dimVolume, Zero),
+        extrapolatedCalculatedFvPatchVectorField::typeName
+    );
+    packingForce.primitiveFieldRef() = addedMomentum_/(mesh_.V()*addedTime_);
+    packingForce.correctBoundaryConditions();
+    packingForce.write();
+
+    addedMomentum_ = Zero;
+    addedTime_ = 0;
+}
+
+
 void Foam::functionObjects::packingMonitor::writeFileHeader(Ostream& os)
 {
     writeHeader(os, "Packing monitor of cloud " + cloudName_);
@@ -190,6 +275,7 @@ bool Foam::functionObjects::packingMonitor::read(const dictionary& dict)
     }
 
     closePackFraction_ = readClosePackFraction(dict);
+    writePackingForce_ = readWritePackingForce(dict);
 
     return true;
 }
@@ -215,6 +301,11 @@ bool Foam::functionObjects::packingMonitor::execute()
 bool Foam::functionObjects::packingMonitor::write()
 {
     const sample s = evaluate();
+
+    if (writePackingForce_)
+    {
+        sumPackingForce();
+    }
 
     Log << type() << " " << name() << ": max solids fraction "
         << s.maxAlphaAveraged << " (averaged), " << s.maxAlphaCell

@@ -76,10 +76,38 @@ Foam::functionObjects::packingMonitor::maxAveragedSolidsFraction
 
 
 template<class CloudType>
+Foam::tmp<Foam::vectorField>
+Foam::functionObjects::packingMonitor::cellPackingMomentum
+(
+    const CloudType& cloud
+) const
+{
+    // Our packing models record the velocity change they gave, which can
+    // differ from UCorrect (a move back out of a full cell is a
+    // displacement, not a velocity: ColoringFunction)
+    const auto* ours = ourPackingModel(cloud);
+
+    if (ours && ours->cellAddedMomentum().size() == mesh_.nCells())
+    {
+        return tmp<vectorField>::New(ours->cellAddedMomentum());
+    }
+
+    auto tmomentum = tmp<vectorField>::New(mesh_.nCells(), Zero);
+    vectorField& momentum = tmomentum.ref();
+
+    for (const typename CloudType::parcelType& p : cloud)
+    {
+        momentum[p.cell()] += p.nParticle()*p.mass()*p.UCorrect();
+    }
+
+    return tmomentum;
+}
+
+
+template<class CloudType>
 Foam::functionObjects::packingMonitor::sample
 Foam::functionObjects::packingMonitor::evaluate(const CloudType& cloud) const
 {
-
     const scalar deltaT = time_.deltaTValue();
     const scalarField& V = mesh_.V();
 
@@ -89,18 +117,11 @@ Foam::functionObjects::packingMonitor::evaluate(const CloudType& cloud) const
     for (const typename CloudType::parcelType& p : cloud)
     {
         const label celli = p.cell();
-        const scalar m = p.nParticle()*p.mass();
-        const vector momentum = m*p.UCorrect();
 
         ++s.nParcels;
-        s.mass += m;
+        s.mass += p.nParticle()*p.mass();
         solidsVolume[celli] += p.nParticle()*p.volume();
-        s.packingMomentum += momentum;
 
-        if (wallCells_[celli])
-        {
-            s.wallPackingMomentum += momentum;
-        }
         if (mag(p.U())*deltaT > cbrt(V[celli]))
         {
             ++s.nFastParcels;
@@ -117,23 +138,14 @@ Foam::functionObjects::packingMonitor::evaluate(const CloudType& cloud) const
         }
     }
 
-    // Our packing models record the velocity change they gave, which can
-    // differ from UCorrect (a move back out of a full cell is a
-    // displacement, not a velocity: ColoringFunction)
-    const auto* ours = ourPackingModel(cloud);
-
-    if (ours && ours->cellAddedMomentum().size() == mesh_.nCells())
+    const tmp<vectorField> tmomentum(cellPackingMomentum(cloud));
+    forAll(wallCells_, celli)
     {
-        s.packingMomentum = Zero;
-        s.wallPackingMomentum = Zero;
-        forAll(wallCells_, celli)
+        const vector& momentum = tmomentum()[celli];
+        s.packingMomentum += momentum;
+        if (wallCells_[celli])
         {
-            const vector& momentum = ours->cellAddedMomentum()[celli];
-            s.packingMomentum += momentum;
-            if (wallCells_[celli])
-            {
-                s.wallPackingMomentum += momentum;
-            }
+            s.wallPackingMomentum += momentum;
         }
     }
 
@@ -149,7 +161,6 @@ Foam::functionObjects::packingMonitor::evaluate(const CloudType& cloud) const
 
     return s;
 }
-
 
 
 // ************************************************************************* //
