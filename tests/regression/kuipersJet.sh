@@ -11,7 +11,11 @@
 #     (the field is cell-based: one parcel is 0.12 of a cell);
 #   - the bed pressure drop over 0.1-0.2 s, after the start-up jump of the
 #     packed bed, lies within 15 % of the bed weight per area,
-#     6.8229*9.81/(0.57*0.015) = 7828 Pa (measured 1.11 x);
+#     6.8229*9.81/(0.57*0.015) = 7828 Pa (measured 1.038 x, 2026-11-27);
+#   - the field packingForce (packingMonitor writePackingForce, means over
+#     the written intervals 0.08-0.12-0.16-0.2 s) summed over the cells
+#     times the cell volume equals the monitor's packing momentum summed
+#     over the steps of 0.08-0.2 s over 0.12 s, to 1e-6 of the weight;
 #   - the slab measure's samples (slabSamples, every 0.1 s from 0.1 s): two
 #     instants, the one at 0.2 s equal to the written field to 1e-12;
 #   - the slab measure on hand-made 76 x 100 grids (kuipersJetSlabs.py): a
@@ -46,6 +50,15 @@ check(res["maxCell"] <= 0.74 + 1e-9,
 check(abs(res["dpRatio"] - 1) <= 0.15,
       "mean deltaP over 0.1-0.2 s %.3f x bed weight within 15 %%"
       % res["dpRatio"])
+force = res.get("forceSplit")
+rows = [r for r in mon if 0.08 + 1e-9 < r[0] <= 0.2 + 1e-9]
+fromMonitor = sum(r[9] for r in rows)/0.12/(mass*9.81)
+fromField = None if force is None else \
+    force["annulus"] + force["beside the jet"] + force["over the jet"]
+check(force is not None and res["forceGrid"][0] == 3
+      and abs(fromField - fromMonitor) <= 1e-6,
+      "packingForce over 3 written intervals %s x weight = monitor's %.6f"
+      % (fromField, fromMonitor))
 import kuipersJetSlabs as s
 samples = s.sample_grids(".", 0.1, (76, 100), 0.57, 1.0)
 check([t for t, _ in samples] == [0.1, 0.2],

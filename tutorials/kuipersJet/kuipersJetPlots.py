@@ -1,6 +1,6 @@
 """Plots of the Kuipers central-jet bed's results (kuipersJetResults.py
 --plot): kuipersJet_<label>_{pressureDrop,packing,profiles,snapshots,
-slabs}.png in the case."""
+slabs,packingForce}.png in the case."""
 import os
 
 import kuipersJetResults as k
@@ -109,6 +109,29 @@ def plot(res, case, label):
                         dpi=90)
             plt.close(fig)
             names.append(os.path.join(case, "kuipersJet_%s_snapshots.png" % label))
+    if "forceGrid" in res:
+        cells, xs, ys = res["grid"]
+        depth = len(cells)/(len(xs)*len(ys))
+        rows = [sum(r)*depth*k.CELL_VOLUME/(res["mass"][0]*k.G)
+                for r in res["forceGrid"][1]]
+        fig, axes = plt.subplots(1, 2, figsize=(8, 4.4),
+                                 gridspec_kw={"width_ratios": [1.6, 1]})
+        packed = k.CLOSE_PACK*2660*k.G
+        im = axes[0].imshow([[f/packed for f in r] for r in res["forceGrid"][1]],
+                            origin="lower", extent=(0, k.WIDTH, 0, ys[-1] + 0.005),
+                            vmin=-0.5, vmax=0.5, cmap="RdBu_r")
+        fig.colorbar(im, ax=axes[0], label="upward force / weight of a packed cell")
+        axes[0].set_ylim(0, 0.8)
+        axes[0].set_xlabel("x [m]")
+        axes[0].set_ylabel("y [m]")
+        axes[0].set_title("packing step's force, mean of %d written times"
+                          % res["forceGrid"][0], fontsize=8)
+        axes[1].plot(rows, ys)
+        axes[1].axvline(0, color="k", lw=0.5)
+        axes[1].set_ylim(0, 0.8)
+        axes[1].set_xlabel("the row's force / bed weight")
+        axes[1].set_title("%s: sum %.3f" % (label, sum(rows)), fontsize=8)
+        save(fig, "packingForce")
     if res.get("slabFlags"):
         names.append(os.path.join(case, "kuipersJet_%s_slabs.png" % label))
         slabs.plot_slabs(res["slabFlags"], names[-1], label)

@@ -6,16 +6,11 @@ Usage:
                          [--tolerance 0.15] [--from T0] [--row] [--wallTime S]
                          [--against DIR ...]
 
-Reads what the case's function objects and solver wrote:
-  postProcessing/bedPressureDrop/0/bedPressureDrop.dat  deltaP [Pa], every step
-  postProcessing/packingMonitor/0/packingMonitor.dat    parcels, mass, largest
-                                                        cell solids fraction
-  postProcessing/profiles/<t>/*34*.xy, *64*.xy          time-averaged solids
-                                                        fraction up the bed at
-                                                        3.4 and 6.4 cm each
-                                                        side of the jet axis
-  <t>/alpha.kinematicCloudMean (or 1 - alpha.airMean)   time-averaged field
-  <t>/alpha.kinematicCloud (or 1 - alpha.air), 0/C      snapshots, cell centres
+Reads postProcessing/{bedPressureDrop,packingMonitor}/0/*.dat (deltaP, every
+step; parcels, mass, largest cell solids fraction), the profiles sets
+(postProcessing/profiles/<t>/*34*.xy, *64*.xy: time-averaged solids fraction
+at 3.4 and 6.4 cm each side of the axis), the written fields
+(alpha.kinematicCloud[Mean] or 1 - alpha.air[Mean], packingForce, 0/C)
 and prints:
   - deltaP over the statistics window (from --from, default the averaging
     start averageStart of system/controlDict): mean / bed weight, standard
@@ -37,14 +32,15 @@ and prints:
     for MFiX-PIC's curve (kuipersJetProfiles.csv, copied from seed 1 Fig. 6);
     only heights the profile reaches are compared;
   - the slab measure (kuipersJetSlabs.py): the share of the instants in the
-    statistics window at which a packed slab lies over a gas void.
+    statistics window at which a packed slab lies over a gas void;
+  - with packingMonitor writePackingForce: where the packing step acts, the
+    field packingForce over the window, split annulus / beside / over the
+    jet / bottom row, over the bed weight.
 --row prints one markdown table row instead (for compareSolvers). --plot
-writes kuipersJet_<label>_{pressureDrop,packing,profiles,snapshots,slabs}.png
-(the snapshots mark a slab and the void under it).
---against DIR ...: for each other run of the case, the mean absolute
-difference between its time-averaged profiles and this run's (at this run's
-heights), and its deltaP/weight and bed expansion beside this run's: how far
-two runs are apart (seeds of the parcel jitter, serial and parallel).
+writes kuipersJet_<label>_{pressureDrop,packing,profiles,snapshots,slabs,
+packingForce}.png (the snapshots mark a slab and the void under it).
+--against DIR ...: for each other run, the mean absolute difference of its
+time-averaged profiles from this run's, its deltaP/weight and bed expansion.
 --check: exit status 1 unless the parcel count and mass stay at their first
 values, the largest cell solids fraction keeps the bound, and the mean deltaP
 is within --tolerance of the bed weight.
@@ -169,6 +165,27 @@ def packed_share(grid, level=0.59):
     return packed/total if total > 0 else float("nan")
 
 
+def packing_force_split(case, res):
+    """The window's mean of packingForce [N/m3] as a grid, and its upward
+    part over the bed weight in the annulus (|x - axis| > 0.10 m), beside
+    the jet (0.03-0.10 m), over it (<= 0.03 m) and in the bottom row."""
+    force, n = post.time_mean_field(case, "packingForce", res["t0"],
+                                     res.get("endTime", 1e9), 1)
+    if force is None or "grid" not in res or "mass" not in res:
+        return
+    cells, xs, ys = res["grid"]
+    weight = res["mass"][0]*G
+    share = dict.fromkeys(("annulus", "beside the jet", "over the jet",
+                           "bottom row"), 0.0)
+    for f, (i, j) in zip(force*CELL_VOLUME/weight, cells):
+        off = abs(xs[i] - AXIS)
+        share["annulus" if off > 0.1 else "beside the jet" if off > 0.03
+              else "over the jet"] += f
+        share["bottom row"] += f if j == 0 else 0.0
+    res["forceGrid"] = (n, to_grid(force, cells, len(xs), len(ys)))
+    res["forceSplit"] = share
+
+
 def summary(case, t0=None):
     """Every number of the case, as a dict (missing pieces are absent)."""
     res = {}
@@ -216,6 +233,7 @@ def summary(case, t0=None):
                 res["packedShare"] = packed_share(grid)
                 break
     slab_grids(case, res)
+    packing_force_split(case, res)
     res["profiles"] = sampled_profiles(case)
     ref = reference_profiles()
     res["mad"] = {}
@@ -267,6 +285,10 @@ def print_report(res, label):
               " budget) %s" % (fmt(res, "dpRatio", "%.3f"),
                                fmt(res, "packing", "%.3f"),
                                fmt(res, "walls", "%.3f")))
+    if "forceSplit" in res:
+        print("  where the packing step acts (packingForce, %d written times): %s"
+              % (res["forceGrid"][0],
+                 ", ".join("%s %.3f" % kv for kv in res["forceSplit"].items())))
     if "maxCell" in res:
         print("  cell solids fraction: max %.4f, 99th percentile of the per-step"
               " max %.4f, max of the model's averaging %.4f, min gas fraction"

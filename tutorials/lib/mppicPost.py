@@ -11,6 +11,9 @@ Readers (OpenFOAM ascii output of a case folder):
     time_dirs(case), latest_time(case) the written times
     internal_field(path)               a volField's internalField
     lagrangian_field(path)             a written cloud field, one row a parcel
+    time_mean_field(case, name, t0, t1)
+                                       a volField's mean over the written
+                                       times in (t0, t1] that hold it
     layer_means(values, centres)       means over layers of cells (by height)
 
 Statistics:
@@ -172,6 +175,24 @@ def internal_field(path):
         return [tuple(map(float, v.split()))
                 for v in re.findall(r"\(([^()]*)\)", m.group(3))]
     return [float(v) for v in m.group(3).split()]
+
+
+def time_mean_field(case, name, t0, t1, component=None):
+    """Mean of a volField's internal field over the written times t with
+    t0 < t <= t1 that hold it, as a numpy array (one component of a vector
+    field with component 0, 1 or 2), and the number of times; (None, 0)
+    if none."""
+    total, count = None, 0
+    for t, d in time_dirs(case):
+        path = os.path.join(case, d, name)
+        if not (t0 + 1e-9 < t <= t1 + 1e-9) or not os.path.exists(path):
+            continue
+        values = np.array(internal_field(path), dtype=float)
+        if component is not None:
+            values = values[:, component]
+        total = values if total is None else total + values
+        count += 1
+    return (total/count, count) if count else (None, 0)
 
 
 def lagrangian_field(path):
