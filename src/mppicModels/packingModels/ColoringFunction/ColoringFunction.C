@@ -294,7 +294,7 @@ velocityCorrection
             );
 
         recordChange(p, kept - p.U(), pack.cell);
-        p.U() = kept - move;
+        this->keepAfterTrack(p, kept, move);
 
         return move;
     }

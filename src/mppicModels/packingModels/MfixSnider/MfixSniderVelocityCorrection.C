@@ -130,8 +130,8 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
 
     if (capacityLimit_ || magSqr(release) > 0)
     {
-        // OpenFOAM adds the move to the velocity after the correction move
-        p.U() = kept - move;
+        // The correction track adds the move to the velocity after it
+        this->keepAfterTrack(p, kept, move);
     }
     return move;
 }
