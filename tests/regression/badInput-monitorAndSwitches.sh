@@ -1,7 +1,7 @@
 #!/bin/bash
 # badInput-monitorAndSwitches <runDir>: a packingMonitor naming a cloud that
-# does not exist, one with closePackFraction 1.5, and coloringFunction with
-# writePackingForce true with writeInterval 10 and with writeControl
+# does not exist, one with closePackFraction 1.5, one with writePackingForce
+# maybe, writePackingForce true with writeInterval 10 and with writeControl
 # runTime (the field sums every step), and coloringFunction with
 # case1a maybe -> FatalIOError naming the keyword (and the range), exit
 # status 1, no crash (mppicPimpleFoam); likewise capacityLimit perhaps and
@@ -23,6 +23,11 @@ setEntry "$case" system/controlDict functions/monitor \
     "{ type packingMonitor; libs (\"libmppicModels.so\"); closePackFraction 1.5; }"
 runBroken "$case" mppicPimpleFoam
 check fatal "$case/log.broken" $rc "closePackFraction" "1.5" "(0, 1)" || status=1
+
+setEntry "$case" system/controlDict functions/monitor \
+    "{ type packingMonitor; libs (\"libmppicModels.so\"); writePackingForce maybe; }"
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "writePackingForce" "maybe" || status=1
 
 setEntry "$case" system/controlDict functions/monitor \
     "{ type packingMonitor; libs (\"libmppicModels.so\"); writePackingForce true; writeInterval 10; }"

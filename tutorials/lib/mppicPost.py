@@ -163,14 +163,17 @@ def latest_time(case):
 
 
 def internal_field(path):
-    """A volField's internalField: a float if uniform, else a list of
-    floats or of vector tuples."""
+    """A volField's internalField: a float (a vector tuple) if uniform,
+    else a list of floats or of vector tuples."""
     text = open(path).read()
     m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*"
                   r"\((.*?)\)\s*;", text, re.S)
     if m is None:
         m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
-        return float(m.group(1))
+        value = m.group(1).strip()
+        if value.startswith("("):
+            return tuple(float(v) for v in value.strip("()").split())
+        return float(value)
     if m.group(1) == "vector":
         return [tuple(map(float, v.split()))
                 for v in re.findall(r"\(([^()]*)\)", m.group(3))]
@@ -181,15 +184,18 @@ def time_mean_field(case, name, t0, t1, component=None):
     """Mean of a volField's internal field over the written times t with
     t0 < t <= t1 that hold it, as a numpy array (one component of a vector
     field with component 0, 1 or 2), and the number of times; (None, 0)
-    if none."""
+    if none. A time written uniform adds its value to every cell (a
+    scalar if every time is uniform)."""
     total, count = None, 0
     for t, d in time_dirs(case):
         path = os.path.join(case, d, name)
         if not (t0 + 1e-9 < t <= t1 + 1e-9) or not os.path.exists(path):
             continue
-        values = np.array(internal_field(path), dtype=float)
+        values = internal_field(path)
         if component is not None:
-            values = values[:, component]
+            values = values[component] if isinstance(values, tuple) \
+                else np.array(values, dtype=float)[:, component]
+        values = np.asarray(values, dtype=float)
         total = values if total is None else total + values
         count += 1
     return (total/count, count) if count else (None, 0)

@@ -72,7 +72,7 @@ def field_momentum(rows):
         end = float(name)
         force = post.internal_field(os.path.join(name, "packingForce"))
         if not isinstance(force, list):
-            force = [(force,)*3]*64
+            force = [force]*64  # written uniform: one vector for all cells
         field = [sum(f[i] for f in force)*CELL_VOLUME*(end - start)
                  for i in range(3)]
         steps = [r for r in rows if start + 1e-9 < r[0] <= end + 1e-9]

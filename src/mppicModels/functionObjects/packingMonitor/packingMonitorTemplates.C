@@ -89,7 +89,8 @@ Foam::functionObjects::packingMonitor::cellPackingMomentum
 
     if (ours && ours->cellAddedMomentum().size() == mesh_.nCells())
     {
-        return tmp<vectorField>::New(ours->cellAddedMomentum());
+        // The model's own field, not a copy
+        return tmp<vectorField>(ours->cellAddedMomentum());
     }
 
     auto tmomentum = tmp<vectorField>::New(mesh_.nCells(), Zero);
