@@ -13,10 +13,11 @@
 #                  /(eps^3 d)] / (rho_p (1-eps) g)
 #   U = 0.06 m/s: (1499.4 + 81.8 Pa/m)/5230.9 Pa/m = 0.3023,
 #   U = 0.12 m/s: (2998.8 + 327.3)/5230.9 = 0.6359
-# each within 10 %, from the mean of dP* over +-0.005 m/s of U. (The gas
-# pressure misses about half a cell of the bed's gradient at each end of
-# the bed, README: 1/20 here; measured 1.004 and 0.942 x Ergun, the
-# second a mean over 0.115-0.12 m/s.)
+# each within 5 %, from the mean of dP* over +-0.005 m/s of U. (The gas
+# pressure misses about half a cell of the bed's gradient at its top,
+# README: 1/40 here; measured 1.029 and 0.968 x Ergun, the second a mean
+# over 0.115-0.12 m/s. Before 2026-11-27 the inlet's fixedFluxPressure
+# left out the first half cell too: 1.004 and 0.942, which fails here.)
 # The same with coloringFunction's conserveMomentum true: a held pack hands
 # the reactions' part down along gravity to its support, so the bed at rest
 # keeps Ergun's drop (before 2026-11-26 its parcels kept that velocity and
@@ -65,8 +66,8 @@ for U, expected in ((0.06, 0.3023), (0.12, 0.6359)):
           "Ergun dP* at %.2f m/s %.4f (hand value %.4f)" % (U, ergun(U), expected))
     near = [p for u, p in raw if abs(u - U) <= 0.005]
     mean = sum(near)/len(near)
-    check(abs(mean/expected - 1) <= 0.10,
-          "dP* at %.2f m/s %.4f within 10 %% of Ergun %.4f (%d steps)"
+    check(abs(mean/expected - 1) <= 0.05,
+          "dP* at %.2f m/s %.4f within 5 %% of Ergun %.4f (%d steps)"
           % (U, mean, expected, len(near)))
 sys.exit(checks.status())
 PY

@@ -13,8 +13,10 @@
 # gas carried 0.049 of it; before the capacity limit its cells reached 1.20.
 # Checks:
 #   - the time-mean of (deltaP - gas head)/(m g/A) over 1.2-2 s between
-#     0.90 (issue 18's figure) and 1.10, m g/A = 1765.8 Pa (measured when
-#     written: 1.0290 (1.0243 before the boundary rule and the release);
+#     0.90 (issue 18's figure) and 1.10, m g/A = 1765.8 Pa (measured
+#     1.0687 on 2026-11-27 with fixedFluxExtrapolatedPressure on the inlet;
+#     when written, with fixedFluxPressure: 1.0290 (1.0243 before the
+#     boundary rule and the release);
 #     the case as it runs, 10 s, 0.9965 over 4-10 s; the collapsed bed gave 0.049,
 #     the stress on the cell counts 0.966, a softer stress (Ps 10) whose
 #     refusals push the bed down 1.26: README);

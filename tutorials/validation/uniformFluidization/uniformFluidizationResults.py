@@ -24,13 +24,20 @@ and prints, over t0 <= t <= end (default t0: 0.4 x end, after the start-up):
       between the last two written times, per second (parcels matched by
       origId). A bubbling bed stirs its parcels by centimetres per second;
       a bed that does not bubble (a static, layered packing) by a few
-      millimetres.
+      millimetres;
+    - with --rows, per row of cells over the window's written times: the
+      mean solids fraction, the share of cells at close pack, the packing
+      step's force on the row over the bed's weight (the packingForce field
+      that packingMonitor writes, sum f_y V/(m g)) and the gas velocity
+      U.air_y; the cell centres and volumes are written by the Allrun.
 
 Usage:
     uniformFluidizationResults.py [--case DIR] [--from T0] [--label L]
-        [--row [--wallTime S] [--failure TEXT]] [--tableHead] [--plot]
+        [--row [--wallTime S] [--failure TEXT]] [--tableHead] [--rows]
+        [--plot]
     --row   one markdown table row (TABLE_HEAD; bin/compareSolvers)
-    --plot  uniformFluidization_<label>_pressureDrop.png: deltaP/weight(t)
+    --plot  uniformFluidization_<label>_pressureDrop.png: deltaP/weight(t);
+            with --rows also uniformFluidization_<label>_rows.png
     uniformFluidizationResults.py --largest DIR:LABEL [DIR:LABEL ...]
         uniformFluidization_largestSolidsFraction.png: the largest
         solids fraction of the model's field at every step of each run,
@@ -40,6 +47,8 @@ import math
 import os
 import re
 import sys
+
+import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
@@ -88,6 +97,40 @@ def median_travel(case):
     return ta, tb, dist[len(dist)//2]/(tb - ta)
 
 
+def rows(case, t0, t1, close_pack=0.6):
+    """Per row of cells, from the bottom, over the written times t0 < t <=
+    t1 that hold packingForce: (height, solids fraction, share of cells at
+    close pack, packing force/(m g), U.air_y); None without such times."""
+    zero = os.path.join(case, "0")
+    centres = np.array(post.internal_field(os.path.join(zero, "C")))
+    volumes = np.asarray(post.internal_field(os.path.join(zero, "V")), float)
+    weight = monitor(case)[-1][2]*9.81
+    sums, count = None, 0
+    for t, d in post.time_dirs(case):
+        path = os.path.join(case, d, "packingForce")
+        if not (t0 + 1e-9 < t <= t1 + 1e-9) or not os.path.exists(path):
+            continue
+        alpha = np.asarray(post.internal_field(
+            os.path.join(case, d, "alpha.kinematicCloud")), float)
+        force = np.asarray(post.internal_field(path), float)
+        force = force[:, 1] if force.ndim == 2 else np.full(len(alpha), force[1])
+        gas = np.asarray(post.internal_field(os.path.join(case, d, "U.air")), float)
+        columns = np.array([alpha, alpha >= close_pack - 1e-6,
+                            force*volumes/weight, gas[:, 1]])
+        sums = columns if sums is None else sums + columns
+        count += 1
+    if not count:
+        return None
+    heights = np.round(centres[:, 1], 9)
+    levels = np.unique(heights)
+    out = []
+    for h in levels:
+        inRow = heights == h
+        mean = sums[:, inRow].mean(axis=1)/count
+        out.append((h, mean[0], mean[1], mean[2]*inRow.sum(), mean[3]))
+    return out
+
+
 def summary(case, t0=None):
     everything = pressure_ratio(case)
     if t0 is None:
@@ -131,6 +174,36 @@ def plot(res, case, label):
     print("wrote", path)
 
 
+def plot_rows(profile, case, label, window):
+    """Solids fraction, share of full cells and the packing force per row
+    against height."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import matplotlib.ticker
+    top = max(i for i, r in enumerate(profile) if r[1] > 0.01) + 2
+    y = [1e3*r[0] for r in profile[:top]]
+    fig, (left, right) = plt.subplots(1, 2, figsize=(8, 4.2), sharey=True)
+    left.plot([r[1] for r in profile[:top]], y, "o-", ms=3, label="solids fraction")
+    left.plot([r[2] for r in profile[:top]], y, "s-", ms=3,
+              label="share of cells at close pack")
+    left.set_xlim(0, 1.05)
+    left.set_xlabel("row mean")
+    left.set_ylabel("height of the row [mm]")
+    left.legend(fontsize=8, loc="upper right")
+    right.barh(y, [r[3] for r in profile[:top]], height=4, color="tab:red")
+    right.axvline(0, color="k", lw=0.8)
+    right.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(4))
+    right.set_xlabel("packing force on the row / bed weight (up +)")
+    right.set_title("sum %+.4f" % sum(r[3] for r in profile), fontsize=9)
+    fig.suptitle("uniform fluidization, %s: rows over %g-%g s" % ((label,) + window),
+                 fontsize=10)
+    fig.tight_layout()
+    path = os.path.join(case, "uniformFluidization_%s_rows.png" % label)
+    fig.savefig(path, dpi=100)
+    print("wrote", path)
+
+
 def plot_largest(runs, bound=0.69):
     """The largest solids fraction of the model's field against time, one
     line per run (DIR:LABEL), with the bound."""
@@ -161,6 +234,7 @@ def main():
     parser.add_argument("--from", dest="t0", type=float, default=None,
                         help="start of the window (default 0.4 x the run's end)")
     parser.add_argument("--plot", action="store_true")
+    parser.add_argument("--rows", action="store_true")
     parser.add_argument("--largest", nargs="+", metavar="DIR:LABEL")
     args = parser.parse_args()
     if args.largest:
@@ -190,8 +264,21 @@ def main():
             print("%s: the parcels moved a median %.1f mm/s between %g and "
                   "%g s" % (args.label, 1e3*res["travel"][2],
                             res["travel"][0], res["travel"][1]))
+    profile = rows(args.case, res["t0"], res["t1"]) if args.rows else None
+    if args.rows and profile is None:
+        print("%s: no written packingForce in the window (packingMonitor "
+              "writePackingForce)" % args.label)
+    elif profile:
+        print("row  height [mm]  solids fraction  at close pack  "
+              "packing force/weight  U.air_y [m/s]")
+        top = max(i for i, r in enumerate(profile) if r[1] > 0.01) + 2
+        for i, (h, alpha, full, force, gas) in enumerate(profile[:top]):
+            print("%3d %8.1f %12.3f %14.2f %+18.4f %14.3f"
+                  % (i, 1e3*h, alpha, full, force, gas))
     if args.plot:
         plot(res, args.case, args.label)
+        if profile:
+            plot_rows(profile, args.case, args.label, (res["t0"], res["t1"]))
     return 0
 
 
