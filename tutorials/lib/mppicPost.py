@@ -11,7 +11,7 @@ Readers (OpenFOAM ascii output of a case folder):
     time_dirs(case), latest_time(case) the written times
     internal_field(path)               a volField's internalField
     lagrangian_field(path)             a written cloud field, one row a parcel
-    time_mean_field(case, name, t0, t1)
+    time_mean_field(case, name, t0, t1[, component, transform])
                                        a volField's mean over the written
                                        times in (t0, t1] that hold it
     layer_means(values, centres)       means over layers of cells (by height)
@@ -180,12 +180,13 @@ def internal_field(path):
     return [float(v) for v in m.group(3).split()]
 
 
-def time_mean_field(case, name, t0, t1, component=None):
+def time_mean_field(case, name, t0, t1, component=None, transform=None):
     """Mean of a volField's internal field over the written times t with
     t0 < t <= t1 that hold it, as a numpy array (one component of a vector
-    field with component 0, 1 or 2), and the number of times; (None, 0)
-    if none. A time written uniform adds its value to every cell (a
-    scalar if every time is uniform)."""
+    field with component 0, 1 or 2; each time's values passed through
+    transform first if given, e.g. an indicator), and the number of times;
+    (None, 0) if none. A time written uniform adds its value to every cell
+    (a scalar if every time is uniform)."""
     total, count = None, 0
     for t, d in time_dirs(case):
         path = os.path.join(case, d, name)
@@ -196,6 +197,8 @@ def time_mean_field(case, name, t0, t1, component=None):
             values = values[component] if isinstance(values, tuple) \
                 else np.array(values, dtype=float)[:, component]
         values = np.asarray(values, dtype=float)
+        if transform is not None:
+            values = np.asarray(transform(values), dtype=float)
         total = values if total is None else total + values
         count += 1
     return (total/count, count) if count else (None, 0)

@@ -43,6 +43,7 @@ Usage:
         solids fraction of the model's field at every step of each run,
         against the bound 1.15 x 0.6 = 0.69
 """
+import collections
 import math
 import os
 import re
@@ -101,34 +102,35 @@ def rows(case, t0, t1, close_pack=0.6):
     """Per row of cells, from the bottom, over the written times t0 < t <=
     t1 that hold packingForce: (height, solids fraction, share of cells at
     close pack, packing force/(m g), U.air_y); None without such times."""
-    zero = os.path.join(case, "0")
-    centres = np.array(post.internal_field(os.path.join(zero, "C")))
-    volumes = np.asarray(post.internal_field(os.path.join(zero, "V")), float)
-    weight = monitor(case)[-1][2]*9.81
-    sums, count = None, 0
-    for t, d in post.time_dirs(case):
-        path = os.path.join(case, d, "packingForce")
-        if not (t0 + 1e-9 < t <= t1 + 1e-9) or not os.path.exists(path):
-            continue
-        alpha = np.asarray(post.internal_field(
-            os.path.join(case, d, "alpha.kinematicCloud")), float)
-        force = np.asarray(post.internal_field(path), float)
-        force = force[:, 1] if force.ndim == 2 else np.full(len(alpha), force[1])
-        gas = np.asarray(post.internal_field(os.path.join(case, d, "U.air")), float)
-        columns = np.array([alpha, alpha >= close_pack - 1e-6,
-                            force*volumes/weight, gas[:, 1]])
-        sums = columns if sums is None else sums + columns
-        count += 1
+    force, count = post.time_mean_field(case, "packingForce", t0, t1, component=1)
     if not count:
         return None
-    heights = np.round(centres[:, 1], 9)
-    levels = np.unique(heights)
-    out = []
-    for h in levels:
-        inRow = heights == h
-        mean = sums[:, inRow].mean(axis=1)/count
-        out.append((h, mean[0], mean[1], mean[2]*inRow.sum(), mean[3]))
-    return out
+    zero = os.path.join(case, "0")
+    centres = post.internal_field(os.path.join(zero, "C"))
+    volumes = np.asarray(post.internal_field(os.path.join(zero, "V")), float)
+    weight = monitor(case)[-1][2]*9.81
+
+    def layers(values):
+        """Row means of a cell field (a uniform value spread to the cells)."""
+        return post.layer_means(np.broadcast_to(values, volumes.shape), centres)
+
+    def mean(name, **kwargs):
+        return post.time_mean_field(case, name, t0, t1, **kwargs)[0]
+
+    heights, solids = layers(mean("alpha.kinematicCloud"))
+    full = layers(mean("alpha.kinematicCloud",
+                       transform=lambda alpha: alpha >= close_pack - 1e-6))[1]
+    # the force summed over the row: its row mean times the row's cells
+    cells = collections.Counter(round(c[1], 9) for c in centres)
+    pushed = layers(force*volumes/weight)[1]
+    gas = layers(mean("U.air", component=1))[1]
+    return [(h, solids[i], full[i], pushed[i]*cells[h], gas[i])
+            for i, h in enumerate(heights)]
+
+
+def bed_rows(profile):
+    """The profile's rows up to one above the last with solids."""
+    return profile[:max(i for i, r in enumerate(profile) if r[1] > 0.01) + 2]
 
 
 def summary(case, t0=None):
@@ -181,17 +183,17 @@ def plot_rows(profile, case, label, window):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     import matplotlib.ticker
-    top = max(i for i, r in enumerate(profile) if r[1] > 0.01) + 2
-    y = [1e3*r[0] for r in profile[:top]]
+    bed = bed_rows(profile)
+    y = [1e3*r[0] for r in bed]
     fig, (left, right) = plt.subplots(1, 2, figsize=(8, 4.2), sharey=True)
-    left.plot([r[1] for r in profile[:top]], y, "o-", ms=3, label="solids fraction")
-    left.plot([r[2] for r in profile[:top]], y, "s-", ms=3,
+    left.plot([r[1] for r in bed], y, "o-", ms=3, label="solids fraction")
+    left.plot([r[2] for r in bed], y, "s-", ms=3,
               label="share of cells at close pack")
     left.set_xlim(0, 1.05)
     left.set_xlabel("row mean")
     left.set_ylabel("height of the row [mm]")
     left.legend(fontsize=8, loc="upper right")
-    right.barh(y, [r[3] for r in profile[:top]], height=4, color="tab:red")
+    right.barh(y, [r[3] for r in bed], height=4, color="tab:red")
     right.axvline(0, color="k", lw=0.8)
     right.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(4))
     right.set_xlabel("packing force on the row / bed weight (up +)")
@@ -271,8 +273,7 @@ def main():
     elif profile:
         print("row  height [mm]  solids fraction  at close pack  "
               "packing force/weight  U.air_y [m/s]")
-        top = max(i for i, r in enumerate(profile) if r[1] > 0.01) + 2
-        for i, (h, alpha, full, force, gas) in enumerate(profile[:top]):
+        for i, (h, alpha, full, force, gas) in enumerate(bed_rows(profile)):
             print("%3d %8.1f %12.3f %14.2f %+18.4f %14.3f"
                   % (i, 1e3*h, alpha, full, force, gas))
     if args.plot:
