@@ -14,30 +14,27 @@ prepareCase "$runDir/case"
 case="$runDir/case"
 status=0
 
-setEntry "$case" system/controlDict functions/monitor \
-    "{ type packingMonitor; libs (\"libmppicModels.so\"); cloud noSuchCloud; }"
-runBroken "$case" mppicPimpleFoam
-check fatal "$case/log.broken" $rc "cloud" "noSuchCloud" || status=1
+# monitorStops "<entries>" <words...>: a packingMonitor with these entries
+# stops the run with a FatalIOError that names the words
+monitorStops()
+{
+    local entries="$1"
+    shift
+    setEntry "$case" system/controlDict functions/monitor \
+        "{ type packingMonitor; libs (\"libmppicModels.so\"); $entries }"
+    runBroken "$case" mppicPimpleFoam
+    check fatal "$case/log.broken" $rc "$@"
+}
 
-setEntry "$case" system/controlDict functions/monitor \
-    "{ type packingMonitor; libs (\"libmppicModels.so\"); closePackFraction 1.5; }"
-runBroken "$case" mppicPimpleFoam
-check fatal "$case/log.broken" $rc "closePackFraction" "1.5" "(0, 1)" || status=1
-
-setEntry "$case" system/controlDict functions/monitor \
-    "{ type packingMonitor; libs (\"libmppicModels.so\"); writePackingForce maybe; }"
-runBroken "$case" mppicPimpleFoam
-check fatal "$case/log.broken" $rc "writePackingForce" "maybe" || status=1
-
-setEntry "$case" system/controlDict functions/monitor \
-    "{ type packingMonitor; libs (\"libmppicModels.so\"); writePackingForce true; writeInterval 10; }"
-runBroken "$case" mppicPimpleFoam
-check fatal "$case/log.broken" $rc "writeInterval" "10" "allowed: 1" || status=1
-
-setEntry "$case" system/controlDict functions/monitor \
-    "{ type packingMonitor; libs (\"libmppicModels.so\"); writePackingForce true; writeControl runTime; writeInterval 0.1; }"
-runBroken "$case" mppicPimpleFoam
-check fatal "$case/log.broken" $rc "writeControl" "runTime" "timeStep" || status=1
+monitorStops "cloud noSuchCloud;" "cloud" "noSuchCloud" || status=1
+monitorStops "closePackFraction 1.5;" "closePackFraction" "1.5" "(0, 1)" \
+    || status=1
+monitorStops "writePackingForce maybe;" "writePackingForce" "maybe" || status=1
+monitorStops "writePackingForce true; writeInterval 10;" \
+    "writeInterval" "10" "allowed: 1" || status=1
+monitorStops \
+    "writePackingForce true; writeControl runTime; writeInterval 0.1;" \
+    "writeControl" "runTime" "timeStep" || status=1
 
 foamDictionary "$case/system/controlDict" -entry functions/monitor -remove > /dev/null
 setEntry "$case" constant/kinematicCloudProperties \

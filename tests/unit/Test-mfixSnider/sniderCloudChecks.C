@@ -11,6 +11,7 @@ Description
 #include "sniderCloudChecks.H"
 #include "mfixCollisionDamping.H"
 #include "unitTest.H"
+#include "sniderCoeffs.H"
 
 using namespace Foam;
 using namespace Foam::unitTest;
@@ -36,6 +37,44 @@ parcelType* newParcel
     p->U() = U;
     p->nParticle() = nParticle;
     return p;
+}
+
+
+void addRows
+(
+    cloudType& cloud,
+    const fvMesh& mesh,
+    const vector& U1,
+    const label firstColumn
+)
+{
+    const scalar Vp = piValue*1e-6/6;
+    const scalar Vcell = 0.25*0.25*0.1;
+    for (label i = firstColumn; i < 4; ++i)
+    {
+        const scalar x = 0.125 + 0.25*i;
+        cloud.addParticle
+        (
+            newParcel(mesh, point(x, 0.125, 0.05), Zero, 0.62*Vcell/Vp)
+        );
+        cloud.addParticle
+        (
+            newParcel(mesh, point(x, 0.375, 0.05), U1, 0.3*Vcell/Vp)
+        );
+    }
+}
+
+
+autoPtr<PackingModel<cloudType>> newSniderModel
+(
+    cloudType& cloud,
+    const dictionary& coeffs
+)
+{
+    dictionary subModels;
+    subModels.add("packingModel", "mfixSnider");
+    subModels.add("mfixSniderCoeffs", coeffs);
+    return PackingModel<cloudType>::New(subModels, cloud);
 }
 
 
@@ -87,24 +126,13 @@ void testConserveMomentum(cloudType& cloud, const fvMesh& mesh)
         newParcel(mesh, point(0.125, 0.125, 0.05), Zero, n0);
     cloud.addParticle(rowOne);
     cloud.addParticle(packed);
-    for (label i = 1; i < 4; ++i)
-    {
-        const scalar x = 0.125 + 0.25*i;
-        cloud.addParticle(newParcel(mesh, point(x, 0.125, 0.05), Zero, n0));
-        cloud.addParticle(newParcel(mesh, point(x, 0.375, 0.05), Zero, n1));
-    }
+    addRows(cloud, mesh, Zero, 1);
 
-    dictionary subModels;
-    subModels.add("packingModel", "mfixSnider");
     dictionary coeffs;
     coeffs.add("closePackFraction", 0.6);
     coeffs.add("capacityLimit", false);
     coeffs.add("conserveMomentum", true);
-    subModels.add("mfixSniderCoeffs", coeffs);
-    autoPtr<PackingModel<cloudType>> model
-    (
-        PackingModel<cloudType>::New(subModels, cloud)
-    );
+    autoPtr<PackingModel<cloudType>> model(newSniderModel(cloud, coeffs));
     mesh.lookupObjectRef<volVectorField>("kinematicCloud:UMean") ==
         dimensionedVector(dimVelocity, Zero);
 
@@ -140,5 +168,61 @@ void testConserveMomentum(cloudType& cloud, const fvMesh& mesh)
     );
 }
 
+
+void testGivenAtStepEnd(cloudType& cloud, const fvMesh& mesh)
+{
+    cloud.clear();
+    const scalar Vp = piValue*1e-6/6;
+    const scalar Vcell = 0.25*0.25*0.1;
+    const scalar n0 = 0.62*Vcell/Vp;
+    const scalar dt = 1e-3;
+
+    // Item 2's bed with capacityLimit (default) and conserveMomentum
+    parcelType* entering =
+        newParcel(mesh, point(0.125, 0.2, 0.05), vector(0, -1, 0), 1);
+    cloud.addParticle(entering);
+    addRows(cloud, mesh, vector(0, -1, 0));
+
+    dictionary coeffs(sniderCoeffs());
+    coeffs.add("slipVelocityFactor", 1);
+    coeffs.add("conserveMomentum", true);
+    autoPtr<PackingModel<cloudType>> model(newSniderModel(cloud, coeffs));
+
+    volVectorField& Us =
+        mesh.lookupObjectRef<volVectorField>("kinematicCloud:UMean");
+    Us == dimensionedVector(dimVelocity, Zero);
+    for (label i = 0; i < 4; ++i)
+    {
+        Us[4 + i] = vector(0, -1, 0);
+    }
+
+    parcelType::trackingData td(cloud);
+    td.updateAverages(cloud);
+    model->cacheFields(true);
+
+    const vector move = model->velocityCorrection(*entering, dt);
+    checkTrue
+    (
+        "conserveMomentum: the refused entrant's move as without it "
+        "(0.05 <= dX_y <= 0.175; dX_y " + Foam::name(dt*move.y()) + ")",
+        dt*move.y() >= 0.05 && dt*move.y() <= 0.175
+    );
+    checkClose
+    (
+        "conserveMomentum: velocityCorrection leaves the velocity alone",
+        entering->U().y(), -1, 1e-12
+    );
+
+    // End of the step, written once: kept 0.85 less the share the pack
+    // (cell 0, M = n0 m) takes of the impulse 1.85 given to the parcel
+    // (mass m): 0.85 - 1.85 m/(M + m)
+    model->cacheFields(false);
+    checkClose
+    (
+        "conserveMomentum: at the step's end kept with its share, "
+        "0.85 - 1.85/(n0 + 1)",
+        entering->U().y(), 0.85 - 1.85/(n0 + 1), 1e-12
+    );
+}
 
 // ************************************************************************* //

@@ -42,10 +42,6 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
         )
     ),
     capacityLimit_(this->coeffs().lookupOrDefault("capacityLimit", true)),
-    conserveMomentum_
-    (
-        this->coeffs().lookupOrDefault("conserveMomentum", false)
-    ),
     randomVelocity_
     (
         mppicCoefficients::read
@@ -54,7 +50,6 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
             mppicCoefficients::bounds::closed(0, 0.1)
         )
     ),
-    reactions_(),
     limit_
     (
         owner.mesh(),
@@ -75,9 +70,7 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     rules_(cm.rules_),
     impulse_(cm.impulse_),
     capacityLimit_(cm.capacityLimit_),
-    conserveMomentum_(cm.conserveMomentum_),
     randomVelocity_(cm.randomVelocity_),
-    reactions_(),
     limit_(cm.limit_)
 {}
 
@@ -175,9 +168,9 @@ void Foam::PackingModels::ColoringFunction<CloudType>::recordChange
 {
     this->recordVelocityChange(p, dU);
 
-    if (conserveMomentum_ && packCell >= 0 && magSqr(dU) > 0)
+    if (this->conserveMomentum() && packCell >= 0 && magSqr(dU) > 0)
     {
-        reactions_.record(p, packCell, dU);
+        this->recordReaction(p, packCell, dU);
     }
 }
 
@@ -228,9 +221,9 @@ void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
         // End of the packing step: the packs take their impulses back; a
         // held pack whose fall the support stopped in this step hands the
         // part down along gravity to it (CapacityLimit::settledVelocity)
-        if (conserveMomentum_)
+        if (this->conserveMomentum())
         {
-            this->applyReactions(reactions_, limit_);
+            this->applyReactions(limit_);
         }
 
         // Where each parcel now is
@@ -277,10 +270,11 @@ velocityCorrection
     {
         // The correction move puts the parcel where it may be; OpenFOAM
         // then adds the move's velocity to the parcel's (MPPICParcel,
-        // tpCorrectTrack). Set the velocity now so that the sum is the
-        // velocity the rules give, without a component into a cell that
-        // refused the parcel: a move back across a cell is a displacement,
-        // and kept as a velocity it would fling the parcel out of the pack
+        // tpCorrectTrack). The parcel is to end with the velocity the
+        // rules give, without a component into a cell that refused it: a
+        // move back across a cell is a displacement, and kept as a
+        // velocity it would fling the parcel out of the pack
+        // (keepAfterTrack: MfixPackingModel.H)
         vector kept;
         const vector move =
             limit_.move

@@ -21,7 +21,11 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     // The base's dictionary constructor would require a stock
     // particleStressModel entry, which these models do not use
     PackingModel<CloudType>(owner),
-    coeffs_(dict.subDict(type + "Coeffs"))
+    coeffs_(dict.subDict(type + "Coeffs")),
+    conserveMomentum_
+    (
+        coeffs_.template lookupOrDefault<bool>("conserveMomentum", false)
+    )
 {}
 
 
@@ -32,7 +36,8 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
 )
 :
     PackingModel<CloudType>(cm),
-    coeffs_(cm.coeffs_)
+    coeffs_(cm.coeffs_),
+    conserveMomentum_(cm.conserveMomentum_)
 {}
 
 

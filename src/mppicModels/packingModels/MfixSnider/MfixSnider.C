@@ -74,15 +74,7 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
         this->coeffs(),
         capacityLimit_
      && this->coeffs().lookupOrDefault("holdSupportedPacks", true)
-    ),
-    conserveMomentum_
-    (
-        this->coeffs().template lookupOrDefault<bool>
-        (
-            "conserveMomentum", false
-        )
-    ),
-    reactions_()
+    )
 {
     meanVelocity();
 }
@@ -102,9 +94,7 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
     cellAlpha_(),
     damping_(rules_.e1(), rules_.closePackFraction()),
     previousMeanVelocity_(nullptr),
-    limit_(cm.limit_),
-    conserveMomentum_(cm.conserveMomentum_),
-    reactions_()
+    limit_(cm.limit_)
 {}
 
 
@@ -254,9 +244,9 @@ void Foam::PackingModels::MfixSnider<CloudType>::cacheFields(const bool store)
         // gravity to it (CapacityLimit::settledVelocity; before 2026-11-26
         // its parcels kept it, and the drag of that fall raised a fixed
         // bed's pressure drop to 2 x Ergun's)
-        if (conserveMomentum_)
+        if (this->conserveMomentum())
         {
-            this->applyReactions(reactions_, limit_);
+            this->applyReactions(limit_);
         }
         storeMeanVelocity();
         previousMeanVelocity_ = nullptr;

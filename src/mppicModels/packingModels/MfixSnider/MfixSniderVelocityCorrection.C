@@ -5,10 +5,10 @@
 Description
     MfixSnider's velocity correction of one parcel: the limited impulse,
     the optional travel cap, damping and release, the capacity limit, the
-    reactions and the boundary rule (see MfixSnider.H). Where the parcel's
-    corrected velocity is written (as kept - move: OpenFOAM adds the move
-    back after the correction track); with conserveMomentum, PackReactions
-    adds the packs' reactions at the end of the step.
+    reactions and the boundary rule (see MfixSnider.H). The velocity the
+    parcel keeps goes to keepAfterTrack, which writes it once in the step
+    (MfixPackingModel.H: at once, or with conserveMomentum at the end of
+    the step with the packs' reactions).
 
 \*---------------------------------------------------------------------------*/
 
@@ -90,7 +90,7 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
         move += release;
     }
 
-    if (conserveMomentum_)
+    if (this->conserveMomentum())
     {
         // The pack that turned the parcel takes the opposite impulse at
         // the end of the step: the cell that refused it, else the denser
@@ -101,7 +101,7 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
             refused ? this->globalCell(p) : packCell(p, tauGrad);
         if (pack >= 0 && magSqr(dPack) > 0)
         {
-            reactions_.record(p, pack, dPack);
+            this->recordReaction(p, pack, dPack);
         }
     }
 

@@ -24,27 +24,61 @@ void Foam::PackReactions<CloudType>::record
 
 
 template<class CloudType>
-template<class Settle, class Report>
+void Foam::PackReactions<CloudType>::give
+(
+    const parcelType& p,
+    const vector& U
+)
+{
+    given_.set(labelPair(p.origProc(), p.origId()), U);
+}
+
+
+template<class CloudType>
+template<class Settle, class Write>
 void Foam::PackReactions<CloudType>::apply
 (
     CloudType& cloud,
     const Settle& settle,
-    const Report& report
+    const Write& write
 )
 {
-    if (!returnReduce(turned_.size(), sumOp<label>()))
+    const bool anyTurned = returnReduce(turned_.size(), sumOp<label>()) > 0;
+    if (!anyTurned && !returnReduce(given_.size(), sumOp<label>()))
     {
+        return;
+    }
+
+    if (Pstream::parRun())
+    {
+        gatherDeparted(cloud);
+    }
+
+    // A parcel's velocity before its share: the one the model gave it
+    const auto given = [this](const parcelType& p)
+    {
+        const auto iter = given_.cfind(labelPair(p.origProc(), p.origId()));
+        return iter.found() ? *iter : p.U();
+    };
+
+    if (!anyTurned)
+    {
+        for (parcelType& p : cloud)
+        {
+            const auto iter =
+                given_.cfind(labelPair(p.origProc(), p.origId()));
+            if (iter.found())
+            {
+                write(p, *iter, *iter);
+            }
+        }
+        given_.clear();
         return;
     }
 
     const fvMesh& mesh = cloud.mesh();
     const coupledCellNeighbours& cells = coupledCellNeighbours::New(mesh);
     const label nCells = mesh.nCells();
-
-    if (Pstream::parRun())
-    {
-        gatherDeparted(cloud);
-    }
 
     // Mass turned by each pack, and mass of the pack itself (its parcels
     // at the end of the step, less any it turned)
@@ -124,6 +158,7 @@ void Foam::PackReactions<CloudType>::apply
     for (parcelType& p : cloud)
     {
         const auto iter = turned_.cfind(labelPair(p.origProc(), p.origId()));
+        const vector U0(given(p));
 
         vector dU = Zero;
         if (iter.found())
@@ -138,9 +173,7 @@ void Foam::PackReactions<CloudType>::apply
 
             if (here && cells.toLocal(pack) == p.cell())
             {
-                const vector U = settle(p, p.U() + dU);
-                report(p, U - p.U());
-                p.U() = U;
+                write(p, U0, settle(p, U0 + dU));
                 continue;
             }
         }
@@ -150,12 +183,11 @@ void Foam::PackReactions<CloudType>::apply
         {
             dU -= kept[celli]*packImpulse[celli]/packMass[celli];
         }
-        const vector U = settle(p, p.U() + dU);
-        report(p, U - p.U());
-        p.U() = U;
+        write(p, U0, settle(p, U0 + dU));
     }
 
     turned_.clear();
+    given_.clear();
 }
 
 

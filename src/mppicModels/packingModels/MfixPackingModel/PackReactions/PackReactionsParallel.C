@@ -15,46 +15,37 @@ Description
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::PackReactions<CloudType>::gatherDeparted(const CloudType& cloud)
+template<class Type>
+void Foam::PackReactions<CloudType>::gatherDeparted
+(
+    const HashSet<labelPair, labelPair::Hash<>>& here,
+    HashTable<Type, labelPair, labelPair::Hash<>>& records
+)
 {
-    HashSet<labelPair, labelPair::Hash<>> here;
-    for (const parcelType& p : cloud)
-    {
-        here.insert(labelPair(p.origProc(), p.origId()));
-    }
-
     // The records of parcels no longer here, in key order
     const label me = Pstream::myProcNo();
     List<List<labelPair>> keys(Pstream::nProcs());
-    labelListList packs(Pstream::nProcs());
-    List<vectorField> changes(Pstream::nProcs());
+    List<List<Type>> values(Pstream::nProcs());
     {
         DynamicList<labelPair> departed;
-        for (const labelPair& key : turned_.sortedToc())
+        DynamicList<Type> departedValues;
+        for (const labelPair& key : records.sortedToc())
         {
             if (!here.found(key))
             {
                 departed.append(key);
+                departedValues.append(records[key]);
+                records.erase(key);
             }
         }
-        keys[me] = departed;
-        packs[me].setSize(departed.size());
-        changes[me].setSize(departed.size());
-        forAll(departed, i)
-        {
-            const Tuple2<label, vector>& record = turned_[departed[i]];
-            packs[me][i] = record.first();
-            changes[me][i] = record.second();
-            turned_.erase(departed[i]);
-        }
+        keys[me].transfer(departed);
+        values[me].transfer(departedValues);
     }
 
     Pstream::gatherList(keys);
     Pstream::scatterList(keys);
-    Pstream::gatherList(packs);
-    Pstream::scatterList(packs);
-    Pstream::gatherList(changes);
-    Pstream::scatterList(changes);
+    Pstream::gatherList(values);
+    Pstream::scatterList(values);
 
     forAll(keys, proci)
     {
@@ -66,14 +57,24 @@ void Foam::PackReactions<CloudType>::gatherDeparted(const CloudType& cloud)
         {
             if (here.found(keys[proci][i]))
             {
-                turned_.set
-                (
-                    keys[proci][i],
-                    Tuple2<label, vector>(packs[proci][i], changes[proci][i])
-                );
+                records.set(keys[proci][i], values[proci][i]);
             }
         }
     }
+}
+
+
+template<class CloudType>
+void Foam::PackReactions<CloudType>::gatherDeparted(const CloudType& cloud)
+{
+    HashSet<labelPair, labelPair::Hash<>> here;
+    for (const parcelType& p : cloud)
+    {
+        here.insert(labelPair(p.origProc(), p.origId()));
+    }
+
+    gatherDeparted(here, turned_);
+    gatherDeparted(here, given_);
 }
 
 
