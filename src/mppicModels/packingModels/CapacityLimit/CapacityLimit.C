@@ -21,7 +21,17 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
     entries_(),
     support_(mesh, coeffs),
     resting_()
-{}
+{
+    const bool pushThrough = coeffs.lookupOrDefault("pushThrough", false);
+    if (pushThrough && Pstream::parRun())
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "pushThrough true in " << coeffs.name()
+            << " runs in serial only (not yet across processor faces);"
+            << " allowed in parallel: false" << exit(FatalIOError);
+    }
+    entries_.setPushThrough(pushThrough);
+}
 
 
 template<class CloudType>

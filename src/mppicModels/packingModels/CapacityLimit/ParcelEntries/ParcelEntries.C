@@ -84,6 +84,22 @@ void Foam::ParcelEntries<CloudType>::update
     // Entrants of each cell
     List<DynamicList<entrant>> entrants(mesh.nCells());
 
+    // Parcels that stayed in each cell (pushThrough only)
+    List<DynamicList<const parcelType*>> stayers
+    (
+        pushThrough_ ? mesh.nCells() : 0
+    );
+    auto stay = [&](const parcelType& p)
+    {
+        const scalar volume = p.nParticle()*p.volume();
+        startVolume[p.cell()] += volume;
+        keptVolume[p.cell()] += volume;
+        if (pushThrough_)
+        {
+            stayers[p.cell()].append(&p);
+        }
+    };
+
     // Records matched by a parcel here; the others left (for another
     // processor, or through an outlet)
     boolList matched(lastCells_.size(), false);
@@ -125,9 +141,7 @@ void Foam::ParcelEntries<CloudType>::update
         const label facei = crossedFace(mesh, p, deltaT, n, depth);
         if (facei < 0)
         {
-            const scalar volume = p.nParticle()*p.volume();
-            startVolume[celli] += volume;
-            keptVolume[celli] += volume;
+            stay(p);
             return;
         }
         enter
@@ -165,9 +179,7 @@ void Foam::ParcelEntries<CloudType>::update
             const label from = lastCells_[recordi].cell;
             if (from == celli)
             {
-                const scalar volume = p.nParticle()*p.volume();
-                startVolume[celli] += volume;
-                keptVolume[celli] += volume;
+                stay(p);
                 continue;
             }
             vector direction =
@@ -223,6 +235,14 @@ void Foam::ParcelEntries<CloudType>::update
     (
         mesh, closePackFraction, overfill, keptVolume, entrants
     );
+
+    if (pushThrough_)
+    {
+        pushRefusedOn
+        (
+            mesh, closePackFraction, overfill, keptVolume, entrants, stayers
+        );
+    }
 }
 
 

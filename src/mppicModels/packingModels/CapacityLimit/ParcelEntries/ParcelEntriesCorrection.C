@@ -71,6 +71,20 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
     const label celli = p.cell();
     const entry* e = find(p);
 
+    if (e && e->pushedTo >= 0)
+    {
+        // Pushed on: just into the face neighbour it makes room in (the
+        // two hexahedra form a convex block, so the straight move toward
+        // the neighbour's centre crosses only their common face)
+        vector on = mesh.cellCentres()[e->pushedTo] - x;
+        on /= max(mag(on), VSMALL);
+        const scalar enter =
+            cellFaceGeometry::entryDistance(mesh, e->pushedTo, x, on);
+        const scalar leave =
+            cellFaceGeometry::exitDistance(mesh, e->pushedTo, x, on);
+        return (enter + 0.01*(leave - enter))/deltaT*on;
+    }
+
     if (e && !e->admitted && (e->from >= 0 || e->remote >= 0))
     {
         // Refused: back into the cell it came from (here or on another

@@ -1,0 +1,193 @@
+/*---------------------------------------------------------------------------*\
+    mppicModels: MFiX-PIC dense-particle models for OpenFOAM
+    This file is part of the mppicModels project, GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    ParcelEntries' push-through (pushThrough): a full cell that refuses an
+    entrant takes it after all when it can pass one of its own parcels on,
+    through full cells, to the nearest cell with room ahead of the entrant
+    (included by ParcelEntries.H).
+
+    Why: a cell takes an entrant only when one of its own parcels has left
+    in the same step. A packed region that moves as a whole (a bed lifted
+    from below, an emulsion pushed aside by a bubble) has its crossings at
+    different steps in different cells, so every cell it moves into
+    refuses, and the region cannot start moving anywhere but at its free
+    surface. Pushed on, each cell of the chain gives one parcel and takes
+    one, and the last cell, which had room, takes one more: the packed
+    region moves by one parcel's volume, as an incompressible one would.
+
+    The chain: a breadth-first search from the refusing cell through face
+    neighbours that lie ahead of the entrant or beside it (centre-to-centre
+    direction d with d & entrant direction >= 0), through cells that have
+    a parcel that stayed in them, to the first cell with room for a parcel
+    (cellRoom::fits); at most maxChainCells cells are visited. Each cell of
+    the chain pushes the parcel that stayed in it and lies furthest toward
+    the next cell.
+
+\*---------------------------------------------------------------------------*/
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::ParcelEntries<CloudType>::pushRefusedOn
+(
+    const fvMesh& mesh,
+    const scalar closePackFraction,
+    const scalar overfill,
+    const scalarField& keptVolume,
+    const List<DynamicList<entrant>>& entrants,
+    List<DynamicList<const parcelType*>>& stayers
+)
+{
+    const label maxChainCells = 400;
+    const vectorField& C = mesh.cellCentres();
+
+    // What each cell holds after the admissions
+    scalarField load(keptVolume);
+    forAll(entrants, celli)
+    {
+        for (const entrant& candidate : entrants[celli])
+        {
+            if (entries_[candidate.parcel].admitted)
+            {
+                load[celli] += candidate.volume;
+            }
+        }
+    }
+
+    // The stayers already pushed on, by cell: the next one to push
+    labelList pushed(mesh.nCells(), Zero);
+
+    // Breadth-first search state, reset for the cells visited only
+    labelList parent(mesh.nCells(), -2);
+    DynamicList<label> visited;
+
+    auto hasRoom = [&](const label celli, const scalar volume)
+    {
+        return cellRoom::fits
+        (
+            volume, closePackFraction*mesh.V()[celli] - load[celli], overfill
+        );
+    };
+
+    forAll(entrants, celli)
+    {
+        for (const entrant& candidate : entrants[celli])
+        {
+            entry& e = entries_[candidate.parcel];
+            if (e.admitted || candidate.from < 0)
+            {
+                continue;
+            }
+
+            // The nearest cell with room ahead, through full cells
+            for (const label c : visited)
+            {
+                parent[c] = -2;
+            }
+            visited.clear();
+
+            label target = -1;
+            if (pushed[celli] < stayers[celli].size())
+            {
+                DynamicList<label> front;
+                parent[celli] = -1;
+                visited.append(celli);
+                front.append(celli);
+                for (label i = 0; i < front.size() && target < 0; ++i)
+                {
+                    const label c = front[i];
+                    for (const label facei : mesh.cells()[c])
+                    {
+                        if (!mesh.isInternalFace(facei))
+                        {
+                            continue;
+                        }
+                        const label n =
+                            mesh.faceOwner()[facei] == c
+                          ? mesh.faceNeighbour()[facei]
+                          : mesh.faceOwner()[facei];
+                        if (parent[n] != -2 || n == candidate.from)
+                        {
+                            continue;
+                        }
+                        if (((C[n] - C[c]) & e.direction) < -SMALL)
+                        {
+                            continue;
+                        }
+                        if (hasRoom(n, candidate.volume))
+                        {
+                            parent[n] = c;
+                            visited.append(n);
+                            target = n;
+                            break;
+                        }
+                        if
+                        (
+                            pushed[n] < stayers[n].size()
+                         && visited.size() < maxChainCells
+                        )
+                        {
+                            parent[n] = c;
+                            visited.append(n);
+                            front.append(n);
+                        }
+                    }
+                }
+            }
+            if (target < 0)
+            {
+                continue;
+            }
+
+            // Down the chain from the target: each cell pushes one of its
+            // stayers, the one furthest toward the next cell, into it
+            label to = target;
+            while (parent[to] >= 0)
+            {
+                const label c = parent[to];
+                vector d = C[to] - C[c];
+                d /= max(mag(d), VSMALL);
+
+                // The stayers of c not yet pushed are at the back of the
+                // list from pushed[c] on: bring the one furthest along d
+                // there, and take it
+                DynamicList<const parcelType*>& ahead = stayers[c];
+                label best = pushed[c];
+                for (label k = pushed[c] + 1; k < ahead.size(); ++k)
+                {
+                    if
+                    (
+                        (ahead[k]->position() & d)
+                      > (ahead[best]->position() & d)
+                    )
+                    {
+                        best = k;
+                    }
+                }
+                Swap(ahead[best], ahead[pushed[c]]);
+                const parcelType* q = ahead[pushed[c]++];
+
+                entry& qe = entries_[q];
+                qe.direction = d;
+                qe.admitted = true;
+                qe.from = c;
+                qe.pushedTo = to;
+
+                const scalar volume = q->nParticle()*q->volume();
+                load[c] -= volume;
+                load[to] += volume;
+                to = c;
+            }
+
+            // The refusing cell now has the room the entrant needs
+            e.admitted = true;
+            load[celli] += candidate.volume;
+            load[candidate.from] -= candidate.volume;
+        }
+    }
+}
+
+
+// ************************************************************************* //
