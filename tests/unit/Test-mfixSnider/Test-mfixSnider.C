@@ -323,6 +323,7 @@ int main(int argc, char *argv[])
     testConserveMomentum(cloud, mesh);
     testGivenAtStepEnd(cloud, mesh);
     testRandomVelocity(cloud, mesh);
+    testPushThrough(cloud, mesh);
 
     Info<< nl << (nFailed() ? "FAILED " : "passed ") << nFailed()
         << " failure(s)" << endl;

@@ -37,6 +37,34 @@ Foam::scalar Foam::ParcelEntries<CloudType>::trackLength
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
+bool Foam::ParcelEntries<CloudType>::returnsToHeldCell
+(
+    const parcelType& p
+) const
+{
+    const entry* e = find(p);
+    return
+        e && !e->admitted && e->remote >= 0 && originHeld_.size()
+     && originHeld_[e->remote];
+}
+
+
+template<class CloudType>
+Foam::label Foam::ParcelEntries<CloudType>::finalCell
+(
+    const parcelType& p
+) const
+{
+    const entry* e = find(p);
+    if (e && e->pushedTo >= 0)
+    {
+        return e->pushedTo;
+    }
+    return e && !e->admitted ? e->from : p.cell();
+}
+
+
+template<class CloudType>
 Foam::vector Foam::ParcelEntries<CloudType>::keptVelocity
 (
     const parcelType& p,
