@@ -4,21 +4,23 @@
 -------------------------------------------------------------------------------
 Description
     Test-mfixSnider's check of coloringFunction's pushThrough (hand values).
-    The box's bottom row (cells 0.25 x 0.25 x 0.1): columns 0-2 hold 5
-    parcels of 0.12 of a cell each (0.60, full at close pack 0.62: a sixth
-    does not fit, 0.12 > 0.02 + 0.5*0.12), column 3 is empty. A sixth
-    parcel falls into column 0 from the row above (U = (0 -1 0), the box's
-    step 1 s carries it across the face).
-    - pushThrough false: column 0 refuses it; its correction move takes it
-      back up out of the cell (dX_y > 0.05, its distance to the face), and
-      no parcel of the row moves out of its cell.
-    - pushThrough true: the nearest cell with room beside or ahead of the
-      fall is column 3, through columns 1 and 2 (the cell above is behind
-      the fall). Each of columns 0, 1 and 2 pushes the parcel that lies
-      furthest toward the next column (x = 0.21, 0.46, 0.71) just into it:
-      dX = (0.25 - 0.21) + 0.01*0.25 = 0.0425 along x, to x = 0.2525,
-      0.5025, 0.7525; the falling parcel is admitted and its correction
-      stays in column 0 (0 < y + dX_y < 0.25).
+    Rows 1 and 2 of the box (cells 0.25 x 0.25 x 0.1) are full: 5 parcels
+    of 0.12 of a cell in each cell (0.60; at close pack 0.62 a sixth does
+    not fit: 0.12 > 0.02 + 0.5*0.12), at x = the column's centre and
+    y = 0.25 row + 0.05 + 0.04 k, k = 0..4; rows 0 and 3 are empty. In
+    the box's step (1 s) a sixth parcel rose into column 0, row 1, from row
+    0 (U = (0 1 0)), and another fell into column 3, row 2, from row 3
+    (U = (0 -1 0)).
+    - pushThrough false: both are refused; their correction moves take
+      them back out (|dX_y| > 0.05, their distance to the face), and no
+      parcel of the full rows leaves its cell.
+    - pushThrough true: the nearest cell with room ahead of the rising
+      parcel, through full cells, is column 0, row 3 (two steps up; every
+      cell beside is full). Rows 1 and 2 of column 0 each push their
+      highest parcel (y = 0.46, 0.71) just into the cell above:
+      dX = (0.25 - 0.21) + 0.01*0.25 = 0.0425 along y. The rising parcel
+      is admitted (it stays in row 1). The falling one is refused as
+      without pushThrough: nothing pushes a pack down.
 
 \*---------------------------------------------------------------------------*/
 
@@ -38,27 +40,34 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
     const scalar Vcell = 0.25*0.25*0.1;
     const scalar n = 0.12*Vcell/Vp;
     const scalar dt = 1e-3;
-
     for (const bool push : {false, true})
     {
         cloud.clear();
-        List<parcelType*> ends(3);
-        for (label column = 0; column < 3; ++column)
+        List<parcelType*> highest(2);
+        for (label row = 1; row < 3; ++row)
         {
-            for (label k = 0; k < 5; ++k)
+            for (label column = 0; column < 4; ++column)
             {
-                const scalar x = 0.25*column + 0.05 + 0.04*k;
-                parcelType* p =
-                    newParcel(mesh, point(x, 0.125, 0.05), Zero, n);
-                cloud.addParticle(p);
-                if (k == 4)
+                for (label k = 0; k < 5; ++k)
                 {
-                    ends[column] = p;
+                    const point x
+                    (
+                        0.125 + 0.25*column, 0.25*row + 0.05 + 0.04*k, 0.05
+                    );
+                    parcelType* p = newParcel(mesh, x, Zero, n);
+                    cloud.addParticle(p);
+                    if (column == 0 && k == 4)
+                    {
+                        highest[row - 1] = p;
+                    }
                 }
             }
         }
+        parcelType* rising =
+            newParcel(mesh, point(0.125, 0.3, 0.05), vector(0, 1, 0), n);
         parcelType* falling =
-            newParcel(mesh, point(0.125, 0.2, 0.05), vector(0, -1, 0), n);
+            newParcel(mesh, point(0.875, 0.7, 0.05), vector(0, -1, 0), n);
+        cloud.addParticle(rising);
         cloud.addParticle(falling);
 
         dictionary subModels;
@@ -77,43 +86,51 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
         model->cacheFields(true);
 
         const word tag = push ? "pushThrough true: " : "pushThrough false: ";
-        const vector fallMove = dt*model->velocityCorrection(*falling, dt);
-        if (!push)
+        const vector fall = dt*model->velocityCorrection(*falling, dt);
+        checkTrue
+        (
+            tag + "the falling parcel goes back up (dX_y "
+          + Foam::name(fall.y()) + " > 0.05)",
+            fall.y() > 0.05
+        );
+        const vector rise = dt*model->velocityCorrection(*rising, dt);
+        if (push)
         {
+            const scalar y = rising->position().y() + rise.y();
             checkTrue
             (
-                tag + "the falling parcel goes back up (dX_y "
-              + Foam::name(fallMove.y()) + " > 0.05)",
-                fallMove.y() > 0.05
+                tag + "the rising parcel stays in row 1 (y + dX_y "
+              + Foam::name(y) + ")",
+                y > 0.25 && y < 0.5
             );
         }
         else
         {
-            const scalar y = falling->position().y() + fallMove.y();
             checkTrue
             (
-                tag + "the falling parcel stays in column 0 (y + dX_y "
-              + Foam::name(y) + ")",
-                y > 0 && y < 0.25 && mag(fallMove.x()) < 0.25
+                tag + "the rising parcel goes back down (dX_y "
+              + Foam::name(rise.y()) + " < -0.05)",
+                rise.y() < -0.05
             );
         }
 
-        for (label column = 0; column < 3; ++column)
+        for (label row = 1; row < 3; ++row)
         {
-            const vector move = dt*model->velocityCorrection(*ends[column], dt);
-            const word which = "column " + Foam::name(column) + "'s parcel at x "
-              + Foam::name(ends[column]->position().x());
+            parcelType& p = *highest[row - 1];
+            const vector move = dt*model->velocityCorrection(p, dt);
+            const word which = "row " + Foam::name(row) + "'s parcel at y "
+              + Foam::name(p.position().y());
             if (push)
             {
-                checkClose(tag + which + " pushed on, dX_x", move.x(), 0.0425, 1e-9);
-                checkClose(tag + which + ", dX_y", move.y(), 0, 1e-12, 1);
+                checkClose(tag + which + " pushed up, dX_y", move.y(), 0.0425, 1e-9);
+                checkClose(tag + which + ", dX_x", move.x(), 0, 1e-12, 1);
             }
             else
             {
                 checkTrue
                 (
-                    tag + which + " stays in its column",
-                    ends[column]->position().x() + move.x() < 0.25*(column + 1)
+                    tag + which + " stays in its row",
+                    p.position().y() + move.y() < 0.25*(row + 1)
                 );
             }
         }

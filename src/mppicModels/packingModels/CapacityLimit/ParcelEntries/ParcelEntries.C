@@ -238,9 +238,11 @@ void Foam::ParcelEntries<CloudType>::update
 
     if (pushThrough_)
     {
+        const vector g(cloud.g().value());
         pushRefusedOn
         (
-            mesh, closePackFraction, overfill, keptVolume, entrants, stayers
+            mesh, closePackFraction, overfill, keptVolume, entrants, stayers,
+            g/max(mag(g), VSMALL)
         );
     }
 }

@@ -17,9 +17,13 @@ Description
     one, and the last cell, which had room, takes one more: the packed
     region moves by one parcel's volume, as an incompressible one would.
 
+    Nothing pushes a pack down: an entrant that moves with gravity is
+    refused as before, and the chain takes no step down.
+
     The chain: a breadth-first search from the refusing cell through face
     neighbours that lie ahead of the entrant or beside it (centre-to-centre
-    direction d with d & entrant direction >= 0), through cells that have
+    direction d with d & entrant direction >= 0), not below the cell (d &
+    g <= 0), through cells that have
     a parcel that stayed in them, to the first cell with room for a parcel
     (cellRoom::fits); at most maxChainCells cells are visited. Each cell of
     the chain pushes the parcel that stayed in it and lies furthest toward
@@ -37,10 +41,12 @@ void Foam::ParcelEntries<CloudType>::pushRefusedOn
     const scalar overfill,
     const scalarField& keptVolume,
     const List<DynamicList<entrant>>& entrants,
-    List<DynamicList<const parcelType*>>& stayers
+    List<DynamicList<const parcelType*>>& stayers,
+    const vector& gHat
 )
 {
     const label maxChainCells = 400;
+    const scalar directionTolerance = 1e-6;
     const vectorField& C = mesh.cellCentres();
 
     // What each cell holds after the admissions
@@ -76,7 +82,13 @@ void Foam::ParcelEntries<CloudType>::pushRefusedOn
         for (const entrant& candidate : entrants[celli])
         {
             entry& e = entries_[candidate.parcel];
-            if (e.admitted || candidate.from < 0)
+            // Nothing pushes a pack down: a parcel falling onto a pack is
+            // refused as before
+            if
+            (
+                e.admitted || candidate.from < 0
+             || (e.direction & gHat) > directionTolerance
+            )
             {
                 continue;
             }
@@ -112,7 +124,12 @@ void Foam::ParcelEntries<CloudType>::pushRefusedOn
                         {
                             continue;
                         }
-                        if (((C[n] - C[c]) & e.direction) < -SMALL)
+                        const vector step = C[n] - C[c];
+                        if
+                        (
+                            (step & e.direction) < -directionTolerance*mag(step)
+                         || (step & gHat) > directionTolerance*mag(step)
+                        )
                         {
                             continue;
                         }
