@@ -4,23 +4,25 @@
 -------------------------------------------------------------------------------
 Description
     Test-mfixSnider's check of coloringFunction's pushThrough (hand values).
-    Rows 1 and 2 of the box (cells 0.25 x 0.25 x 0.1) are full: 5 parcels
-    of 0.12 of a cell in each cell (0.60; at close pack 0.62 a sixth does
-    not fit: 0.12 > 0.02 + 0.5*0.12), at x = the column's centre and
-    y = 0.25 row + 0.05 + 0.04 k, k = 0..4; rows 0 and 3 are empty. In
-    the box's step (1 s) a sixth parcel rose into column 0, row 1, from row
-    0 (U = (0 1 0)), and another fell into column 3, row 2, from row 3
-    (U = (0 -1 0)).
+    Cells 0.25 x 0.25 x 0.1. Rows 1 and 2 of the box are full, and row 0
+    but for column 0: 5 parcels of 0.12 of a cell in each cell (0.60; at
+    close pack 0.62 a sixth does not fit: 0.12 > 0.02 + 0.5*0.12), at
+    the column's centre x and y = 0.25 row + 0.05 + 0.04 k, k = 0..4; row 3
+    is empty. In the box's step (1 s) a sixth parcel rose into column 0,
+    row 1, from column 0, row 0 (U = (0 1 0)), and another fell into
+    column 3, row 2, from row 3 (U = (0 -1 0)).
     - pushThrough false: both are refused; their correction moves take
       them back out (|dX_y| > 0.05, their distance to the face), and no
       parcel of the full rows leaves its cell.
-    - pushThrough true: the nearest cell with room ahead of the rising
-      parcel, through full cells, is column 0, row 3 (two steps up; every
-      cell beside is full). Rows 1 and 2 of column 0 each push their
-      highest parcel (y = 0.46, 0.71) just into the cell above:
-      dX = (0.25 - 0.21) + 0.01*0.25 = 0.0425 along y. The rising parcel
-      is admitted (it stays in row 1). The falling one is refused as
-      without pushThrough: nothing pushes a pack down.
+    - pushThrough true: the nearest cells with room, through full cells
+      and not back where the parcel came from, are two steps away: for the
+      rising parcel column 0, row 3 (every other cell within two steps is
+      full), so rows 1 and 2 of column 0 each push their highest parcel
+      (y = 0.46, 0.71) just into the cell above: dX_y = (0.25 - 0.21) +
+      0.01*0.25 = 0.0425; for the falling one column 2, row 3, through
+      column 2, row 2, whose highest parcel (x = 0.625, y = 0.71) is
+      pushed up by the same 0.0425. Both entrants are admitted (they stay
+      in their rows).
 
 \*---------------------------------------------------------------------------*/
 
@@ -44,9 +46,10 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
     {
         cloud.clear();
         List<parcelType*> highest(2);
-        for (label row = 1; row < 3; ++row)
+        List<parcelType*> besideFall(1);
+        for (label row = 0; row < 3; ++row)
         {
-            for (label column = 0; column < 4; ++column)
+            for (label column = row ? 0 : 1; column < 4; ++column)
             {
                 for (label k = 0; k < 5; ++k)
                 {
@@ -56,9 +59,13 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
                     );
                     parcelType* p = newParcel(mesh, x, Zero, n);
                     cloud.addParticle(p);
-                    if (column == 0 && k == 4)
+                    if (row && column == 0 && k == 4)
                     {
                         highest[row - 1] = p;
+                    }
+                    if (row == 2 && column == 2 && k == 4)
+                    {
+                        besideFall[0] = p;
                     }
                 }
             }
@@ -87,12 +94,32 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
 
         const word tag = push ? "pushThrough true: " : "pushThrough false: ";
         const vector fall = dt*model->velocityCorrection(*falling, dt);
-        checkTrue
-        (
-            tag + "the falling parcel goes back up (dX_y "
-          + Foam::name(fall.y()) + " > 0.05)",
-            fall.y() > 0.05
-        );
+        if (push)
+        {
+            const scalar y = falling->position().y() + fall.y();
+            checkTrue
+            (
+                tag + "the falling parcel stays in row 2 (y + dX_y "
+              + Foam::name(y) + ")",
+                y > 0.5 && y < 0.75
+            );
+            parcelType& p = *besideFall[0];
+            const vector move = dt*model->velocityCorrection(p, dt);
+            checkClose
+            (
+                tag + "column 2, row 2's parcel at y 0.71 pushed up, dX_y",
+                move.y(), 0.0425, 1e-9
+            );
+        }
+        else
+        {
+            checkTrue
+            (
+                tag + "the falling parcel goes back up (dX_y "
+              + Foam::name(fall.y()) + " > 0.05)",
+                fall.y() > 0.05
+            );
+        }
         const vector rise = dt*model->velocityCorrection(*rising, dt);
         if (push)
         {

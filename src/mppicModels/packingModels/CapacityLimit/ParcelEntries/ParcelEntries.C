@@ -238,11 +238,9 @@ void Foam::ParcelEntries<CloudType>::update
 
     if (pushThrough_)
     {
-        const vector g(cloud.g().value());
         pushRefusedOn
         (
-            mesh, closePackFraction, overfill, keptVolume, entrants, stayers,
-            g/max(mag(g), VSMALL)
+            mesh, closePackFraction, overfill, keptVolume, entrants, stayers
         );
     }
 }

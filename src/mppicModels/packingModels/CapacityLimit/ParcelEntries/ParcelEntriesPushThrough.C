@@ -5,8 +5,8 @@
 Description
     ParcelEntries' push-through (pushThrough): a full cell that refuses an
     entrant takes it after all when it can pass one of its own parcels on,
-    through full cells, to the nearest cell with room ahead of the entrant
-    (included by ParcelEntries.H).
+    through full cells, to the nearest cell with room (included by
+    ParcelEntries.H).
 
     Why: a cell takes an entrant only when one of its own parcels has left
     in the same step. A packed region that moves as a whole (a bed lifted
@@ -17,17 +17,16 @@ Description
     one, and the last cell, which had room, takes one more: the packed
     region moves by one parcel's volume, as an incompressible one would.
 
-    Nothing pushes a pack down: an entrant that moves with gravity is
-    refused as before, and the chain takes no step down.
-
     The chain: a breadth-first search from the refusing cell through face
-    neighbours that lie ahead of the entrant or beside it (centre-to-centre
-    direction d with d & entrant direction >= 0), not below the cell (d &
-    g <= 0), through cells that have
-    a parcel that stayed in them, to the first cell with room for a parcel
-    (cellRoom::fits); at most maxChainCells cells are visited. Each cell of
-    the chain pushes the parcel that stayed in it and lies furthest toward
-    the next cell.
+    neighbours (not back into the cell the entrant came from), through
+    cells that have a parcel that stayed in them, to the first cell with
+    room for a parcel (cellRoom::fits); at most maxChainCells cells are
+    visited. The entrant's volume goes to the nearest room, whichever way,
+    as an incompressible emulsion's would. Each cell of the chain pushes
+    the parcel that stayed in it and lies furthest toward the next cell.
+    (Chains only ahead of the entrant, or none for falling entrants, left
+    the refusals of falling parcels alone and the Kuipers jet's bed was
+    held up by them: docs/VALIDATION.md, issue 21, fourteenth pass.)
 
 \*---------------------------------------------------------------------------*/
 
@@ -41,12 +40,10 @@ void Foam::ParcelEntries<CloudType>::pushRefusedOn
     const scalar overfill,
     const scalarField& keptVolume,
     const List<DynamicList<entrant>>& entrants,
-    List<DynamicList<const parcelType*>>& stayers,
-    const vector& gHat
+    List<DynamicList<const parcelType*>>& stayers
 )
 {
     const label maxChainCells = 400;
-    const scalar directionTolerance = 1e-6;
     const vectorField& C = mesh.cellCentres();
 
     // What each cell holds after the admissions
@@ -84,11 +81,7 @@ void Foam::ParcelEntries<CloudType>::pushRefusedOn
             entry& e = entries_[candidate.parcel];
             // Nothing pushes a pack down: a parcel falling onto a pack is
             // refused as before
-            if
-            (
-                e.admitted || candidate.from < 0
-             || (e.direction & gHat) > directionTolerance
-            )
+            if (e.admitted || candidate.from < 0)
             {
                 continue;
             }
@@ -124,15 +117,7 @@ void Foam::ParcelEntries<CloudType>::pushRefusedOn
                         {
                             continue;
                         }
-                        const vector step = C[n] - C[c];
-                        if
-                        (
-                            (step & e.direction) < -directionTolerance*mag(step)
-                         || (step & gHat) > directionTolerance*mag(step)
-                        )
-                        {
-                            continue;
-                        }
+
                         if (hasRoom(n, candidate.volume))
                         {
                             parent[n] = c;
