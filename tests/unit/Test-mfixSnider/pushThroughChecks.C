@@ -77,16 +77,13 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
         cloud.addParticle(rising);
         cloud.addParticle(falling);
 
-        dictionary subModels;
-        subModels.add("packingModel", "coloringFunction");
         dictionary coeffs;
         coeffs.add("closePackFraction", 0.62);
         coeffs.add("holdSupportedPacks", false);
         coeffs.add("pushThrough", push);
-        subModels.add("coloringFunctionCoeffs", coeffs);
         autoPtr<PackingModel<cloudType>> model
         (
-            PackingModel<cloudType>::New(subModels, cloud)
+            newPackingModel(cloud, "coloringFunction", coeffs)
         );
         parcelType::trackingData td(cloud);
         td.updateAverages(cloud);

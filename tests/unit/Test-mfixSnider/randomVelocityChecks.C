@@ -37,18 +37,14 @@ void testRandomVelocity(cloudType& cloud, const fvMesh& mesh)
     const label n = 20000;
     for (const scalar s : {0.0, 0.05})
     {
-        dictionary subModels;
-        subModels.add("packingModel", "coloringFunction");
         dictionary coeffs;
         coeffs.add("closePackFraction", 0.6);
         coeffs.add("impulse", "faceGradient");
         coeffs.add("capacityLimit", false);
         coeffs.add("randomVelocity", s);
-        subModels.add("coloringFunctionCoeffs", coeffs);
-
         autoPtr<PackingModel<cloudType>> model
         (
-            PackingModel<cloudType>::New(subModels, cloud)
+            newPackingModel(cloud, "coloringFunction", coeffs)
         );
         parcelType::trackingData td(cloud);
         td.updateAverages(cloud);

@@ -65,16 +65,27 @@ void addRows
 }
 
 
+autoPtr<PackingModel<cloudType>> newPackingModel
+(
+    cloudType& cloud,
+    const word& type,
+    const dictionary& coeffs
+)
+{
+    dictionary subModels;
+    subModels.add("packingModel", type);
+    subModels.add(word(type + "Coeffs"), coeffs);
+    return PackingModel<cloudType>::New(subModels, cloud);
+}
+
+
 autoPtr<PackingModel<cloudType>> newSniderModel
 (
     cloudType& cloud,
     const dictionary& coeffs
 )
 {
-    dictionary subModels;
-    subModels.add("packingModel", "mfixSnider");
-    subModels.add("mfixSniderCoeffs", coeffs);
-    return PackingModel<cloudType>::New(subModels, cloud);
+    return newPackingModel(cloud, "mfixSnider", coeffs);
 }
 
 
