@@ -20,7 +20,8 @@ Description
     The chain: a breadth-first search from the refusing cell through face
     neighbours (not back into the cell the entrant came from), through
     cells that have a parcel that stayed in them, to the first cell with
-    room for a parcel (cellRoom::fits); at most maxChainCells cells are
+    room for the entrant's volume (cellRoom::fits: exact for parcels of one
+    size, the pushed parcel may be larger); at most maxChainCells cells are
     visited. The entrant's volume goes to the nearest room, whichever way,
     as an incompressible emulsion's would. Each cell of the chain pushes
     the parcel that stayed in it and lies furthest toward the next cell.
