@@ -4,7 +4,9 @@
 # A run stopped at a written time and continued gives the run that did not
 # stop, gas included (issue 20):
 #   - mppicPimpleFoam on tutorials/validation/uniformFluidization (a
-#     bubbling bed, gas solved), with coloringFunction and with mfixSnider:
+#     bubbling bed, gas solved), with coloringFunction, with it and
+#     pushThrough (which must have pushed after the restart), and with
+#     mfixSnider:
 #     0 -> 0.05 s at once, and 0 -> 0.025 s then continued (startFrom
 #     latestTime) to 0.05 s; both write ascii at 17 digits;
 #   - mppicReactingPimpleFoam on tutorials/verification/wetBulb (a droplet
@@ -22,6 +24,8 @@ runDir="${1:?usage: restartContinuity.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 # wholeAndContinued <tutorial> <name> <precision> <T1> <T2> <endArg> [args]
+# (cloudEdit: a sed script for constant/kinematicCloudProperties, which
+# must then contain cloudCheck)
 wholeAndContinued()
 {
     local tutorial="$1" name="$2" precision="$3" t1="$4" t2="$5" endArg="$6"
@@ -34,6 +38,12 @@ wholeAndContinued()
         # (wetBulb writes every second: write the stop time; in both, as
         # its adjustable time step lands on write times)
         setEntry "$runDir/$name.$piece" system/controlDict writeInterval "$t1"
+        if [ -n "$cloudEdit" ]
+        then
+            sed -i "$cloudEdit" "$runDir/$name.$piece/constant/kinematicCloudProperties"
+            grep -q "$cloudCheck" "$runDir/$name.$piece/constant/kinematicCloudProperties" \
+                || { echo "$name: $cloudCheck not set"; exit 1; }
+        fi
     done
 
     runAllrun "$runDir/$name.whole" $endArg "$t2" "$@" || exit 1
@@ -62,6 +72,26 @@ do
     check sameState "$runDir/bed.$packing.whole" \
         "$runDir/bed.$packing.continued" 0.05 1e-8 $bedFields || status=1
 done
+
+# coloringFunction with pushThrough: the chains start at the ninth step
+# (0.0045 s); after the restart at 0.025 s about 300 refused entrants a
+# step are pushed on (15 056 in the 50 steps, measured)
+cloudEdit='s/^\( *conserveMomentum false;\)$/\1\n        pushThrough true;/'
+cloudCheck='pushThrough true;'
+wholeAndContinued validation/uniformFluidization bed.pushThrough 17 \
+    0.025 0.05 "" -packing coloringFunction
+cloudEdit=""
+check sameState "$runDir/bed.pushThrough.whole" \
+    "$runDir/bed.pushThrough.continued" 0.05 1e-8 $bedFields || status=1
+pushes=$(awk '/pushThrough: /{n += $2} END {print n + 0}' \
+    "$runDir/bed.pushThrough.continued/log.continue")
+if [ "$pushes" -gt 0 ]
+then
+    echo "PASS pushThrough: $pushes refused entrants pushed on after the restart (> 0)"
+else
+    echo "FAIL pushThrough: no entrant pushed on after the restart"
+    status=1
+fi
 
 wholeAndContinued validation/uniformFluidization bed.sixDigits 6 \
     0.025 0.05 "" -packing coloringFunction

@@ -22,15 +22,7 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
     support_(mesh, coeffs),
     resting_()
 {
-    const bool pushThrough = coeffs.lookupOrDefault("pushThrough", false);
-    if (pushThrough && Pstream::parRun())
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "pushThrough true in " << coeffs.name()
-            << " runs in serial only (not yet across processor faces);"
-            << " allowed in parallel: false" << exit(FatalIOError);
-    }
-    entries_.setPushThrough(pushThrough);
+    entries_.setPushThrough(coeffs.lookupOrDefault("pushThrough", false));
 }
 
 
@@ -135,6 +127,13 @@ void Foam::CapacityLimit<CloudType>::startStep
 )
 {
     entries_.update(cloud, closePackFraction, overfill_, deltaT);
+
+    if (entries_.pushThrough())
+    {
+        Info<< "    pushThrough: "
+            << returnReduce(entries_.nPushed(), sumOp<label>())
+            << " refused entrants admitted" << endl;
+    }
 
     if (!holdSupportedPacks_)
     {

@@ -236,9 +236,10 @@ void Foam::ParcelEntries<CloudType>::update
         mesh, closePackFraction, overfill, keptVolume, entrants
     );
 
+    nPushed_ = 0;
     if (pushThrough_)
     {
-        pushRefusedOn
+        nPushed_ = pushRefusedOn
         (
             mesh, closePackFraction, overfill, keptVolume, entrants, stayers
         );

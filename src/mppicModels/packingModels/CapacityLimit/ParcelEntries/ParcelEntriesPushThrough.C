@@ -19,7 +19,8 @@ Description
 
     The chain: a breadth-first search from the refusing cell through face
     neighbours (not back into the cell the entrant came from), through
-    cells that have a parcel that stayed in them, to the first cell with
+    cells that have a parcel that stayed in them (internal faces only: in
+    parallel a chain stays on its processor), to the first cell with
     room for the entrant's volume (cellRoom::fits: exact for parcels of one
     size, the pushed parcel may be larger); at most maxChainCells cells are
     visited. The entrant's volume goes to the nearest room, whichever way,
@@ -34,7 +35,7 @@ Description
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::ParcelEntries<CloudType>::pushRefusedOn
+Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
 (
     const fvMesh& mesh,
     const scalar closePackFraction,
@@ -66,6 +67,7 @@ void Foam::ParcelEntries<CloudType>::pushRefusedOn
     // Breadth-first search state, reset for the cells visited only
     labelList parent(mesh.nCells(), -2);
     DynamicList<label> visited;
+    label nAdmitted = 0;
 
     auto hasRoom = [&](const label celli, const scalar volume)
     {
@@ -80,8 +82,8 @@ void Foam::ParcelEntries<CloudType>::pushRefusedOn
         for (const entrant& candidate : entrants[celli])
         {
             entry& e = entries_[candidate.parcel];
-            // Nothing pushes a pack down: a parcel falling onto a pack is
-            // refused as before
+            // An entrant from another processor stays refused: its
+            // processor has already counted it back (returnRefused)
             if (e.admitted || candidate.from < 0)
             {
                 continue;
@@ -188,8 +190,11 @@ void Foam::ParcelEntries<CloudType>::pushRefusedOn
             e.admitted = true;
             load[celli] += candidate.volume;
             load[candidate.from] -= candidate.volume;
+            ++nAdmitted;
         }
     }
+
+    return nAdmitted;
 }
 
 

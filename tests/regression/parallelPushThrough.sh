@@ -1,0 +1,9 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# parallelPushThrough <runDir>
+# tutorials/validation/uniformFluidization with coloringFunction and
+# pushThrough for 0.01 s, serial, on 2 and on 16 processes
+# (parallelLinearHat.sh pushThrough): chains on every decomposition, the
+# serial run's parcels and mass, no cell above close pack.
+#------------------------------------------------------------------------------
+exec "${0%/*}/parallelLinearHat.sh" "${1:?usage: parallelPushThrough.sh <runDir>}" pushThrough
