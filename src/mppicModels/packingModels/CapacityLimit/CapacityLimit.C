@@ -5,6 +5,7 @@
 
 #include "CapacityLimit.H"
 #include "cellRoom.H"
+#include "processorPolyPatch.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -56,6 +57,49 @@ Foam::scalar Foam::CapacityLimit<CloudType>::readOverfill
             << overfill << " is out of range [0, 1]" << exit(FatalIOError);
     }
     return overfill;
+}
+
+
+template<class CloudType>
+void Foam::CapacityLimit<CloudType>::warnOfCutsAcrossGravity
+(
+    const fvMesh& mesh,
+    const vector& g
+)
+{
+    const vector down = g/max(mag(g), VSMALL);
+
+    // Processor faces within 45 degrees of horizontal, by area
+    scalar across = 0;
+    scalar total = 0;
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (!isA<processorPolyPatch>(pp))
+        {
+            continue;
+        }
+        forAll(pp, i)
+        {
+            const scalar area = mag(pp.faceAreas()[i]);
+            total += area;
+            if (mag(pp.faceAreas()[i] & down) > sqrt(0.5)*area)
+            {
+                across += area;
+            }
+        }
+    }
+    reduce(across, sumOp<scalar>());
+    reduce(total, sumOp<scalar>());
+
+    if (across > 0)
+    {
+        WarningInFunction
+            << "pushThrough: " << across/max(total, VSMALL)
+            << " of the processor faces' area lies across gravity. The"
+            << " chains do not cross processor faces, so such a cut"
+            << " through a bed blocks those that run to its surface;"
+            << " decompose along gravity (e.g. simple (2 1 1))" << endl;
+    }
 }
 
 
@@ -128,6 +172,11 @@ void Foam::CapacityLimit<CloudType>::startStep
 {
     entries_.update(cloud, closePackFraction, overfill_, deltaT);
 
+    if (entries_.pushThrough() && Pstream::parRun() && !cutsChecked_)
+    {
+        warnOfCutsAcrossGravity(cloud.mesh(), cloud.g().value());
+        cutsChecked_ = true;
+    }
     if (entries_.pushThrough())
     {
         Info<< "    pushThrough: "
