@@ -83,7 +83,7 @@ wholeAndContinued validation/uniformFluidization bed.pushThrough 17 \
 cloudEdit=""
 check sameState "$runDir/bed.pushThrough.whole" \
     "$runDir/bed.pushThrough.continued" 0.05 1e-8 $bedFields || status=1
-pushes=$(awk '/pushThrough: /{n += $2} END {print n + 0}' \
+pushes=$(awk '/^ *pushThrough: [0-9]+ refused/ {n += $2} END {print n + 0}' \
     "$runDir/bed.pushThrough.continued/log.continue")
 if [ "$pushes" -gt 0 ]
 then

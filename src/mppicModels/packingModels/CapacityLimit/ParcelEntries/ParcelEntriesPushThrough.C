@@ -82,9 +82,10 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
         for (const entrant& candidate : entrants[celli])
         {
             entry& e = entries_[candidate.parcel];
-            // An entrant from another processor stays refused: its
-            // processor has already counted it back (returnRefused)
-            if (e.admitted || candidate.from < 0)
+            // (An entrant from another processor has been counted back in
+            // its cell there (returnRefused): admitted here, that cell
+            // counts one parcel too many this step, never too few)
+            if (e.admitted || (candidate.from < 0 && candidate.remote < 0))
             {
                 continue;
             }
@@ -189,7 +190,10 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
             // The refusing cell now has the room the entrant needs
             e.admitted = true;
             load[celli] += candidate.volume;
-            load[candidate.from] -= candidate.volume;
+            if (candidate.from >= 0)
+            {
+                load[candidate.from] -= candidate.volume;
+            }
             ++nAdmitted;
         }
     }
