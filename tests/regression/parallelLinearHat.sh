@@ -45,8 +45,9 @@
 # tutorial's coloringFunction with pushThrough, whose chains stay on their
 # processor, so the runs differ from the serial one where a chain would
 # cross a processor face (measured when written, refused entrants pushed on
-# in the 20 steps: serial 1219, 2 ranks 1438, 16 ranks 154; alpha.air 0.3
-# of its scale apart: one parcel in a cell). Checks, each run: the parcel
+# in the 20 steps: serial 1219, 2 ranks 1438, 16 ranks 1290, or 154 when
+# entrants from another processor were not pushed on; alpha.air 0.3 of its
+# scale apart: one parcel in a cell). Checks, each run: the parcel
 # count and cloud mass of the serial run, pushes in the log, the largest
 # cell solids fraction <= 0.600 (+1e-6) at every step; the warning of
 # processor faces across gravity in the 16-rank run's log, not the 2's.
