@@ -172,13 +172,13 @@ void Foam::CapacityLimit<CloudType>::startStep
 {
     entries_.update(cloud, closePackFraction, overfill_, deltaT);
 
-    if (entries_.pushThrough() && Pstream::parRun() && !cutsChecked_)
-    {
-        warnOfCutsAcrossGravity(cloud.mesh(), cloud.g().value());
-        cutsChecked_ = true;
-    }
     if (entries_.pushThrough())
     {
+        if (Pstream::parRun() && !cutsChecked_)
+        {
+            warnOfCutsAcrossGravity(cloud.mesh(), cloud.g().value());
+            cutsChecked_ = true;
+        }
         Info<< "    pushThrough: "
             << returnReduce(entries_.nPushed(), sumOp<label>())
             << " refused entrants admitted" << endl;
