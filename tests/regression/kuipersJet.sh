@@ -21,7 +21,15 @@
 #   - the slab measure on hand-made 76 x 100 grids (kuipersJetSlabs.py): a
 #     row 62/76 = 0.816 at 0.56 over a run of 39/76 = 0.513 at 0.1 is a
 #     slab (rows 60 over 30); 60/76 = 0.789 dense, or a void run of 38
-#     (0.5, not wider than half), or the void above the dense row, is not.
+#     (0.5, not wider than half), or the void above the dense row, is not;
+#   - the gas budget (kuipersJetGasBudget.py): the minimum fluidization of
+#     a resting full cell (eps_s 0.6) by the drag it reads equals Ergun's
+#     quadratic, 1.75/e^3 Re^2 + 150(1-e)/e^3 Re = d^3 rho_g rho_p g/mu^2
+#     = 12080.8 at e = 0.4: Re 7.4977, U_mf 0.22493 m/s (1e-3); the
+#     superficial gas velocity it reads from phi.air across the row of
+#     cells at 0.9 m (above the bed, whose gas volume below stays put) at
+#     0.2 s is the inflow over the cross-section, (0.25*0.555 + 10*0.015)
+#     /0.57 = 0.50658 m/s (1e-4).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: kuipersJet.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -78,5 +86,16 @@ check(s.slab_rows(grid(60, 62, 30, 39)) == (60, 30), "slab 62/76 over void 39/76
 check(s.slab_rows(grid(60, 60, 30, 39)) is None, "no slab at 60/76 dense")
 check(s.slab_rows(grid(60, 62, 30, 38)) is None, "no slab over a void of 38/76")
 check(s.slab_rows(grid(30, 62, 60, 39)) is None, "no slab under a void")
+import numpy as np
+import kuipersJetGasBudget as gb
+check(abs(gb.minimum_fluidization(0.6)/0.22493 - 1) < 1e-3,
+      "minimum fluidization of a full cell %.5f m/s = Ergun's 0.22493"
+      % gb.minimum_fluidization(0.6))
+grid = np.array(cells)
+u_s, _ = gb.superficial_velocity(".", "0.2", gb.vertical_faces(".", grid), len(grid))
+top = np.abs(np.array(ys)[grid[:, 1]] - 0.905) < 1e-6
+check(top.sum() == 152 and abs(u_s[top].mean()/0.50658 - 1) < 1e-4,
+      "superficial gas velocity across 0.9 m %.5f m/s = inflow 0.50658 (%d cells)"
+      % (u_s[top].mean(), top.sum()))
 sys.exit(checks.status())
 PY
