@@ -7,7 +7,9 @@
 # status 1, no crash (mppicPimpleFoam); likewise capacityLimit perhaps and
 # solidsFractionFrom maybe (the message lists cell and averaging); the
 # solver's PIMPLE switches faceInterpolatedDrag maybe and gasVelocityFromFlux
-# perhaps.
+# perhaps; balanceImplicitDrag maybe, and balanceImplicitDrag true with the
+# cloud's U coupled explicitly (nothing to balance: the error names the
+# keyword and semiImplicit).
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
 prepareCase "$runDir/case"
@@ -69,5 +71,17 @@ foamDictionary "$case/system/fvSolution" \
 setEntry "$case" system/fvSolution PIMPLE/gasVelocityFromFlux perhaps
 runBroken "$case" mppicPimpleFoam
 check fatal "$case/log.broken" $rc "gasVelocityFromFlux" "perhaps" || status=1
+
+foamDictionary "$case/system/fvSolution" \
+    -entry PIMPLE/gasVelocityFromFlux -remove > /dev/null
+setEntry "$case" system/fvSolution PIMPLE/balanceImplicitDrag maybe
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "balanceImplicitDrag" "maybe" || status=1
+
+setEntry "$case" system/fvSolution PIMPLE/balanceImplicitDrag true
+setEntry "$case" constant/kinematicCloudProperties \
+    solution/sourceTerms/schemes/U "explicit 1"
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "balanceImplicitDrag" "semiImplicit" || status=1
 
 exit $status
