@@ -19,8 +19,8 @@ and prints:
   - where the rest of the weight goes over the window: the packing step's
     mean upward force over the weight (packingMonitor) and what neither it
     nor the gas carries, from the cloud's vertical momentum written at the
-    window's ends: the walls' rebounds, frictionless here, so the
-    distributor's (tutorials/lib/mppicPost.py);
+    window's ends: the walls' rebounds and, without balanceImplicitDrag,
+    the drag the parcels got beyond the gas's (tutorials/lib/mppicPost.py);
   - the largest cell solids fraction over all steps, the 99th percentile of
     the per-step largest value, the smallest gas fraction, against the
     bound max(1.05 alpha_cp, alpha_cp + V_parcel/V_cell) (a cell-based field
@@ -281,8 +281,8 @@ def print_report(res, label):
           " MFiX-TFM 1.026, CPFD 1.089")
     if "packing" in res:
         print("  the weight over the window: the gas (deltaP) %s, the packing"
-              " step %s, the walls' rebounds (the rest of the cloud's momentum"
-              " budget) %s" % (fmt(res, "dpRatio", "%.3f"),
+              " step %s, the rest (walls; drag beyond the gas's pressure drop)"
+              " %s" % (fmt(res, "dpRatio", "%.3f"),
                                fmt(res, "packing", "%.3f"),
                                fmt(res, "walls", "%.3f")))
     if "forceSplit" in res:

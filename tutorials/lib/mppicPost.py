@@ -33,6 +33,8 @@ A bed's vertical momentum budget over a window (packingMonitor's columns):
     weight_rest(case, t0, t1, carried, mass)
                                        what neither the gas nor the packing
                                        step carries: the walls' rebounds
+                                       and the drag the gas did not give
+                                       (without balanceImplicitDrag)
 
 Scripts find this module through $MPPIC_PROJECT_DIR (etc/bashrc), else
 through the tutorials folder they sit in:

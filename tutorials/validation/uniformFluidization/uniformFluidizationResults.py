@@ -17,9 +17,12 @@ and prints, over t0 <= t <= end (default t0: 0.4 x end, after the start-up):
       sum(m dU_y)/dt/(m g) (packingMonitor): where the weight goes that the
       gas does not carry (every cell of this 2-cell-deep box touches a
       wall, so the monitor's wall part is all of it and is not shown);
-    - the rest, held by the walls' rebounds (the distributor's: the side
-      walls are frictionless), from the cloud's momentum budget with its
-      vertical momentum at the written times nearest the window's ends;
+    - the rest, from the cloud's momentum budget with its vertical
+      momentum at the written times nearest the window's ends: the walls'
+      rebounds (the distributor's: the side walls are frictionless) and,
+      without PIMPLE balanceImplicitDrag, the drag the parcels got beyond
+      the gas's pressure drop (0.079 of the weight at 3 parcels per packed
+      cell with no parcel at the distributor; docs/VALIDATION.md);
     - how much the bed moves: the median distance the parcels travelled
       between the last two written times, per second (parcels matched by
       origId). A bubbling bed stirs its parcels by centimetres per second;
@@ -256,8 +259,8 @@ def main():
     else:
         print("%s: (deltaP - gas head)/weight over %g-%g s = %.4f "
               "(std %.3f, standard error of the mean %.4f); packing force "
-              "%.4f x weight; walls (distributor) %s x weight, by the "
-              "momentum budget; max cell solids fraction %.3f; the model's "
+              "%.4f x weight; the rest (walls, drag beyond the gas's) %s x weight, "
+              "by the momentum budget; max cell solids fraction %.3f; the model's "
               "field at most %.4f at every step"
               % (args.label, res["t0"], res["t1"], res["ratio"], res["std"],
                  res["error"], res["packing"], "-" if res["walls"] is None
