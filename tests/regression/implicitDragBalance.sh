@@ -45,7 +45,6 @@ done
 
 cd "$runDir" || exit 1
 /usr/bin/python3 - <<'PY'
-import math
 import os
 import re
 import sys
@@ -57,7 +56,8 @@ DT = 5e-4
 
 
 def budget(case):
-    """Per step: R, the lowest parcel's gap over its radius; and the mass."""
+    """R of each step; the lowest gap between a parcel and the distributor
+    over the written steps; the monitor's rows; the weight."""
     dp = {round(r[0], 6): (r[3] - r[4])/r[5] for r in
           post.read_table(os.path.join(case, "postProcessing/bedPressureDrop/0/bedPressureDrop.dat"))}
     mon = post.read_table(os.path.join(case, "postProcessing/packingMonitor/0/packingMonitor.dat"))
@@ -68,21 +68,17 @@ def budget(case):
         cloud = os.path.join(case, d, "lagrangian", "kinematicCloud")
         if not os.path.exists(os.path.join(cloud, "U")):
             continue
-        field = {n: [v[0] for v in post.lagrangian_field(os.path.join(cloud, n))]
-                 for n in ("nParticle", "d", "rho")}
-        u = [v[1] for v in post.lagrangian_field(os.path.join(cloud, "U"))]
-        text = open(os.path.join(cloud, "positions")).read()
-        y = [float(m) for m in re.findall(r"\([-\d.e+]+ ([-\d.e+]+) [-\d.e+]+\)", text)]
-        momentum[round(t, 6)] = sum(n*r*math.pi/6*d**3*v for n, d, r, v in
-                                    zip(field["nParticle"], field["d"], field["rho"], u))
-        lowest[round(t, 6)] = min(yi - d/2 for yi, d in zip(y, field["d"]))
+        y = [p[1] for p in post.lagrangian_field(os.path.join(cloud, "positions"))]
+        diameters = [v[0] for v in post.lagrangian_field(os.path.join(cloud, "d"))]
+        momentum[round(t, 6)] = post.cloud_momentum(case, d)
+        lowest[round(t, 6)] = min(yi - di/2 for yi, di in zip(y, diameters))
     steps = sorted(momentum)
     rest = [(momentum[t] - momentum[s])/(DT*weight) + 1 - pack[t]/(DT*weight) - dp[t]
             for s, t in zip(steps, steps[1:])]
     return rest, min(lowest.values()), mon, weight
 
 
-def given(case, weight):
+def given(case):
     """The momentum the balance gave per step, y, over dt W; and the share
     of it that cells without parcels kept."""
     rows = [re.findall(r"\(([^)]*)\)", line) for line in open(os.path.join(case, "log.steps"))
@@ -100,7 +96,7 @@ for mode, (rest, low, mon, weight) in results.items():
 rest_on, rest_off = (sum(results[m][0])/len(results[m][0]) for m in ("on", "off"))
 check(abs(rest_on) <= 5e-4,
       "on: the momentum budget's rest %.2e of the weight per step, within 5e-4" % rest_on)
-impulse, kept = given("on", results["on"][3])
+impulse, kept = given("on")
 mean_given = sum(impulse[1:])/len(impulse[1:])/(DT*results["on"][3])
 check(len(impulse) == 40 and abs((rest_off - rest_on)/(-mean_given) - 1) <= 0.3,
       "off - on %.5f = -(the balance's mean impulse %.5f) to 30 %% (%d log lines)"

@@ -127,10 +127,14 @@ def budget(case, t0, t1):
     out = {band: {"flow": np.zeros(3), "cells": np.zeros(3), "n": 0,
                   "full": np.zeros(5), "partial": np.zeros(5),
                   "fullWeight": 0.0, "partialWeight": 0.0} for band, _, _ in BANDS}
+    eps = None
     for before, time in zip(times, times[1:]):
         if not t0 + 1e-9 < float(time) <= t1 + 1e-9:
+            eps = None
             continue
-        eps0, eps = (np.array(jet.solids_field(case, d)) for d in (before, time))
+        # the field at the interval's start is the previous interval's end
+        eps0 = np.array(jet.solids_field(case, before)) if eps is None else eps
+        eps = np.array(jet.solids_field(case, time))
         u_s, alpha = superficial_velocity(case, time, faces, n_cells)
         u_rel = u_s - alpha*parcel_velocity(case, time, n_cells)
         weight = np.maximum(eps, 1e-9)*RHO_P*jet.G

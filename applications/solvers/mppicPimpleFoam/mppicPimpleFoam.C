@@ -85,16 +85,9 @@ Usage
                                needs U semiImplicit in the cloud's
                                sourceTerms, else a FatalIOError | off
     \endtable
-    With semi-implicit drag the gas takes the drag at its new velocity and
-    the parcels took it at the old one; in beds whose parcels cross cells
-    the difference keeps one sign. The parcels then get more drag than the
-    gas's pressure drop shows: 0.06-0.08 of the bed's weight in the uniform
-    bed at 3 parcels per packed cell and in the Kuipers jet with
-    pushThrough (docs/VALIDATION.md, issue 21). balanceImplicitDrag removes
-    the difference. It is off by default, so that the solver gives stock
-    MPPICFoam's answer, which keeps the difference.
-    With it on, a face between a packed cell and the freeboard or a
-    fixed-velocity inflow carries the drag of its half cells: a fixed bed
+    With faceInterpolatedDrag on, a face between a packed cell and the
+    freeboard or a fixed-velocity inflow carries the drag of its half
+    cells: a fixed bed
     20 cells high at 0.12 m/s (tutorials/validation/minimumFluidization,
     inflow superficialVelocityInletVelocity) gives 0.993 of Ergun's pressure
     drop and the first row its exact interstitial velocity, against 0.963
@@ -106,6 +99,15 @@ Usage
     between close pack and 0.42, the packed rows' gas velocity a fifth of
     the one continuity asks), but that bed then leans on the packing model
     for 9 % of its weight (docs/VALIDATION.md): off by default.
+
+    With semi-implicit drag the gas takes the drag at its new velocity and
+    the parcels took it at the old one; in beds whose parcels cross cells
+    the difference keeps one sign. The parcels then get more drag than the
+    gas's pressure drop shows: 0.06-0.08 of the bed's weight in the uniform
+    bed at 3 parcels per packed cell and in the Kuipers jet with
+    pushThrough (docs/VALIDATION.md, issue 21). balanceImplicitDrag removes
+    the difference. It is off by default, so that the solver gives stock
+    MPPICFoam's answer, which keeps the difference.
 
 \*---------------------------------------------------------------------------*/
 
