@@ -325,9 +325,7 @@ int main(int argc, char *argv[])
     testRandomVelocity(cloud, mesh);
     testPushThrough(cloud, mesh);
 
-    Info<< nl << (nFailed() ? "FAILED " : "passed ") << nFailed()
-        << " failure(s)" << endl;
-    return nFailed();
+    return summary();
 }
 
 

@@ -23,6 +23,12 @@ Description
       column 2, row 2, whose highest parcel (x = 0.625, y = 0.71) is
       pushed up by the same 0.0425. Both entrants are admitted (they stay
       in their rows).
+    - pushThrough true with the two highest parcels of column 2, row 2
+      level: the fourth at (0.6, 0.71 - 1e-12), the fifth at (0.65, 0.71),
+      within 1e-9 of the 0.25 between the cells: the fourth, made first
+      and so of the lower origId, is pushed (dX_y 0.0425 + 1e-12), the
+      fifth stays in its row (without the rule for level parcels the fifth
+      went, by its 1e-12).
 
 \*---------------------------------------------------------------------------*/
 
@@ -42,30 +48,40 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
     const scalar Vcell = 0.25*0.25*0.1;
     const scalar n = 0.12*Vcell/Vp;
     const scalar dt = 1e-3;
-    for (const bool push : {false, true})
+    for (const label setUp : {0, 1, 2})
     {
+        const bool push = setUp > 0;
+        const bool level = setUp == 2;
         cloud.clear();
         List<parcelType*> highest(2);
-        List<parcelType*> besideFall(1);
+        List<parcelType*> besideFall(2, nullptr);
         for (label row = 0; row < 3; ++row)
         {
             for (label column = row ? 0 : 1; column < 4; ++column)
             {
                 for (label k = 0; k < 5; ++k)
                 {
-                    const point x
+                    point x
                     (
                         0.125 + 0.25*column, 0.25*row + 0.05 + 0.04*k, 0.05
                     );
+                    if (level && row == 2 && column == 2 && k >= 3)
+                    {
+                        x = point
+                        (
+                            k == 3 ? 0.6 : 0.65, 0.71 - 1e-12*(4 - k), 0.05
+                        );
+                    }
                     parcelType* p = newParcel(mesh, x, Zero, n);
                     cloud.addParticle(p);
                     if (row && column == 0 && k == 4)
                     {
                         highest[row - 1] = p;
                     }
-                    if (row == 2 && column == 2 && k == 4)
+                    if (row == 2 && column == 2 && k >= 3)
                     {
-                        besideFall[0] = p;
+                        // the one to be pushed first
+                        besideFall[level ? k - 3 : 4 - k] = p;
                     }
                 }
             }
@@ -89,7 +105,8 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
         td.updateAverages(cloud);
         model->cacheFields(true);
 
-        const word tag = push ? "pushThrough true: " : "pushThrough false: ";
+        const word tag = level ? "pushThrough true, level parcels: "
+          : push ? "pushThrough true: " : "pushThrough false: ";
         const vector fall = dt*model->velocityCorrection(*falling, dt);
         if (push)
         {
@@ -104,8 +121,18 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
             const vector move = dt*model->velocityCorrection(p, dt);
             checkClose
             (
-                tag + "column 2, row 2's parcel at y 0.71 pushed up, dX_y",
-                move.y(), 0.0425, 1e-9
+                tag + "column 2, row 2's parcel at y "
+              + Foam::name(p.position().y()) + " pushed up, dX_y",
+                move.y(), 0.0425 + (level ? 1e-12 : 0), 1e-9
+            );
+            parcelType& q = *besideFall[1];
+            const scalar yq =
+                q.position().y() + dt*model->velocityCorrection(q, dt).y();
+            checkTrue
+            (
+                tag + "the other at y " + Foam::name(q.position().y())
+              + " stays in row 2 (y + dX_y " + Foam::name(yq) + ")",
+                yq < 0.75
             );
         }
         else

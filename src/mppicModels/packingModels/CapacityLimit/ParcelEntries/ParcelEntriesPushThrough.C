@@ -25,7 +25,9 @@ Description
     size, the pushed parcel may be larger); at most maxChainCells cells are
     visited. The entrant's volume goes to the nearest room, whichever way,
     as an incompressible emulsion's would. Each cell of the chain pushes
-    the parcel that stayed in it and lies furthest toward the next cell.
+    the parcel that stayed in it and lies furthest toward the next cell
+    (level parcels, within 1e-9 of the distance between the cells, by
+    their lower (origProc, origId)).
     (Chains only ahead of the entrant, or none for falling entrants, left
     the refusals of falling parcels alone and the Kuipers jet's bed was
     held up by them: docs/VALIDATION.md, issue 21, fourteenth pass.)
@@ -154,19 +156,36 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
             {
                 const label c = parent[to];
                 vector d = C[to] - C[c];
+                const scalar tie = 1e-9*mag(d);
                 d /= max(mag(d), VSMALL);
 
                 // The stayers of c not yet pushed are at the back of the
                 // list from pushed[c] on: bring the one furthest along d
-                // there, and take it
+                // there, and take it. Pushed parcels sit at one distance
+                // from the face they were pushed through, so several can
+                // be level: within 1e-9 of the step between the cells the
+                // lower (origProc, origId) goes, not the last bit of a
+                // position (which a re-tracking or a restart changes)
                 DynamicList<const parcelType*>& ahead = stayers[c];
                 label best = pushed[c];
                 for (label k = pushed[c] + 1; k < ahead.size(); ++k)
                 {
+                    const scalar further =
+                        (ahead[k]->position() - ahead[best]->position()) & d;
                     if
                     (
-                        (ahead[k]->position() & d)
-                      > (ahead[best]->position() & d)
+                        further > tie
+                     || (
+                            further > -tie
+                         && labelPair
+                            (
+                                ahead[k]->origProc(), ahead[k]->origId()
+                            )
+                          < labelPair
+                            (
+                                ahead[best]->origProc(), ahead[best]->origId()
+                            )
+                        )
                     )
                     {
                         best = k;
