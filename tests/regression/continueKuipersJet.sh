@@ -12,6 +12,10 @@
 # Checks at every step of both pieces: 38 000 parcels, the cloud mass
 # 0.6*0.57*0.5*0.015*2660 = 6.8229 kg to 1e-9, the largest cell solids
 # fraction <= 0.600 (+1e-6); and that the second piece started from 0.01 s.
+# mppicPost.function_object_table on hand-made pieces: 0/x.dat (t 0-3),
+# 2/x.dat (t 2, 2.5: a piece stopped), 2/x_2.dat (t 2-5: the piece
+# continued from the same 2 s, which OpenFOAM writes beside it) must read
+# t 0, 1, 2, 3, 4, 5 with the values of x_2.dat from 2 on.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: continueKuipersJet.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -42,5 +46,18 @@ mass = 0.6*0.57*0.5*0.015*2660
 masses = [float(m) for m in re.findall(r"Current mass in system\s*=\s*([0-9.e+-]+)", log)]
 check(len(masses) >= 40 and all(abs(m/mass - 1) < 1e-9 for m in masses),
       "cloud mass %.6g kg = %.6g kg at every step" % (masses[-1] if masses else -1, mass))
+import os, tempfile
+sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tutorials", "lib"))
+import mppicPost
+with tempfile.TemporaryDirectory() as case:
+    pieces = {"0/x.dat": [(0, 0), (1, 0), (2, 0), (3, 0)], "2/x.dat": [(2, 1), (2.5, 1)],
+              "2/x_2.dat": [(2, 2), (3, 2), (4, 2), (5, 2)]}
+    for name, rows in pieces.items():
+        path = os.path.join(case, "postProcessing", "x", name)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        open(path, "w").write("# Time value\n" + "".join("%g %g\n" % r for r in rows))
+    read = [tuple(r) for r in mppicPost.function_object_table(case, "x")]
+check(read == [(0, 0), (1, 0), (2, 2), (3, 2), (4, 2), (5, 2)],
+      "function_object_table over a piece continued from where another stopped: %s" % read)
 sys.exit(checks.status())
 PY

@@ -82,11 +82,13 @@ def read_table(path):
 def function_object_table(case, name):
     """Rows of postProcessing/<name>/<start>/<name>.dat; a continued run
     writes a folder per start time, and its rows replace the earlier
-    pieces' rows from its first time on."""
+    pieces' rows from its first time on. A piece that starts where an
+    earlier one did finds the file there and writes <name>_<start>.dat
+    beside it (OpenFOAM's functionObjectFile): it comes after the file."""
     rows = []
-    paths = glob.glob(os.path.join(case, "postProcessing", name, "*",
-                                   name + ".dat"))
-    for path in sorted(paths, key=lambda p: float(p.split(os.sep)[-2])):
+    paths = [p for pattern in (name + ".dat", name + "_*.dat")
+             for p in glob.glob(os.path.join(case, "postProcessing", name, "*", pattern))]
+    for path in sorted(paths, key=lambda p: (float(p.split(os.sep)[-2]), len(p), p)):
         new = read_table(path)
         if new:
             rows = [r for r in rows if r[0] < new[0][0]] + new

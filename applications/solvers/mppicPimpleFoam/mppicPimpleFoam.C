@@ -107,7 +107,9 @@ Usage
     bed at 3 parcels per packed cell and in the Kuipers jet with
     pushThrough (docs/VALIDATION.md, issue 21). balanceImplicitDrag removes
     the difference. It is off by default, so that the solver gives stock
-    MPPICFoam's answer, which keeps the difference.
+    MPPICFoam's answer, which keeps the difference; tutorials/kuipersJet
+    turns it on (with coloringFunction's pushThrough: docs/VALIDATION.md,
+    issue 21's seventeenth pass).
 
 \*---------------------------------------------------------------------------*/
 
