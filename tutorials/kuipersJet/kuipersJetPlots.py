@@ -6,6 +6,40 @@ import os
 import kuipersJetResults as k
 import kuipersJetSlabs as slabs
 
+# the runs' lines (green and black are the seed's curves)
+RUN_COLOURS = ("b", "tab:orange", "tab:red", "tab:purple", "tab:brown", "tab:cyan")
+
+
+def plot_profiles(runs, name):
+    """The time-averaged profiles of each run, [(label, {3.4: (h, eps),
+    6.4: ...})], against Kuipers' points and MFiX-PIC's (seed 1 Fig. 6),
+    with each run's mean |difference| from Kuipers' points, into name."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    ref = k.reference_profiles()
+    fig, axes = plt.subplots(1, 2, figsize=(9, 4), sharey=True)
+    for ax, x_cm in zip(axes, (3.4, 6.4)):
+        m = ref[("kuipers1990", x_cm)]
+        p = ref[("mfix_pic", x_cm)]
+        ax.plot([v[0] for v in p], [v[1] for v in p], "g-", lw=1,
+                label="MFiX-PIC (seed 1 Fig. 6)")
+        ax.plot([v[0] for v in m], [v[1] for v in m], "ko", ms=3,
+                label="Kuipers (1990), measured")
+        for (label, profiles), colour in zip(runs, RUN_COLOURS):
+            if x_cm in profiles:
+                h, eps = profiles[x_cm]
+                ax.plot(h, eps, colour, lw=1.5, label="%s, MAD %.3f" % (
+                    label, k.mean_abs_difference(h, eps, m)))
+        ax.set_title("%.1f cm from the jet axis" % x_cm)
+        ax.set_xlabel("height [m]")
+        ax.set_xlim(0, 0.8)
+        ax.legend(fontsize=7)
+    axes[0].set_ylabel("time-averaged solids fraction")
+    fig.tight_layout()
+    fig.savefig(name, dpi=90)
+    plt.close(fig)
+
 
 def plot(res, case, label):
     import matplotlib
@@ -57,25 +91,8 @@ def plot(res, case, label):
         save(fig, "packing")
 
     if res["profiles"]:
-        ref = k.reference_profiles()
-        fig, axes = plt.subplots(1, 2, figsize=(9, 4), sharey=True)
-        for ax, x_cm in zip(axes, (3.4, 6.4)):
-            m = ref[("kuipers1990", x_cm)]
-            p = ref[("mfix_pic", x_cm)]
-            ax.plot([v[0] for v in p], [v[1] for v in p], "g-", lw=1,
-                    label="MFiX-PIC (seed 1 Fig. 6)")
-            ax.plot([v[0] for v in m], [v[1] for v in m], "ko", ms=3,
-                    label="Kuipers (1990), measured")
-            if x_cm in res["profiles"]:
-                h, eps = res["profiles"][x_cm]
-                ax.plot(h, eps, "b-", lw=1.5, label="%s, MAD %.3f" % (
-                    label, res["mad"].get(("ours", x_cm), float("nan"))))
-            ax.set_title("%.1f cm from the jet axis" % x_cm)
-            ax.set_xlabel("height [m]")
-            ax.set_xlim(0, 0.8)
-            ax.legend(fontsize=7)
-        axes[0].set_ylabel("time-averaged solids fraction")
-        save(fig, "profiles")
+        names.append(os.path.join(case, "kuipersJet_%s_profiles.png" % label))
+        plot_profiles([(label, res["profiles"])], names[-1])
 
     if "grid" in res:
         cells, xs, ys = res["grid"]

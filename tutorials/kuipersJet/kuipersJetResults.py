@@ -40,7 +40,8 @@ and prints:
 writes kuipersJet_<label>_{pressureDrop,packing,profiles,snapshots,slabs,
 packingForce}.png (the snapshots mark a slab and the void under it).
 --against DIR ...: for each other run, the mean absolute difference of its
-time-averaged profiles from this run's, its deltaP/weight and bed expansion.
+time-averaged profiles from this run's, its deltaP/weight and bed expansion;
+with --plot, every run's profiles in kuipersJet_<label>_profiles.png.
 --check: exit status 1 unless the parcel count and mass stay at their first
 values, the largest cell solids fraction keeps the bound, and the mean deltaP
 is within --tolerance of the bed weight.
@@ -334,9 +335,10 @@ def table_row(res, label, wall, failure):
         slab, per_sim, failure or "no")
 
 
-def compare_runs(case, others, t0):
+def compare_runs(case, others, t0, label=None):
     """Profile distance between this run and each other run, and their
-    deltaP/weight and bed expansion."""
+    deltaP/weight and bed expansion; with a label, all their profiles in
+    kuipersJet_<label>_profiles.png (each run's latest sampled window)."""
     mine, base = sampled_profiles(case), summary(case, t0)
     print("run | profile 3.4 cm: mean abs difference from %s | 6.4 cm | "
           "deltaP/weight | bed expansion [m]" % case)
@@ -344,17 +346,17 @@ def compare_runs(case, others, t0):
                                         base.get("expansion", float("nan"))))
     for other in others:
         theirs, res = sampled_profiles(other), summary(other, t0)
-        cells = []
-        for x_cm in (3.4, 6.4):
-            if x_cm in mine and x_cm in theirs:
-                h, eps = theirs[x_cm]
-                cells.append("%.4f" % mean_abs_difference(
-                    h, eps, list(zip(*mine[x_cm]))))
-            else:
-                cells.append("-")
+        cells = ["%.4f" % mean_abs_difference(*theirs[x], list(zip(*mine[x])))
+                 if x in mine and x in theirs else "-" for x in (3.4, 6.4)]
         print("%s | %s | %s | %.3f | %.3f" % (
             other, cells[0], cells[1], res.get("dpRatio", float("nan")),
             res.get("expansion", float("nan"))))
+    if label:
+        import kuipersJetPlots
+        runs = [(os.path.basename(os.path.abspath(c)), sampled_profiles(c))
+                for c in [case] + others]
+        kuipersJetPlots.plot_profiles(
+            runs, os.path.join(case, "kuipersJet_%s_profiles.png" % label))
     return 0
 
 
@@ -367,7 +369,7 @@ def main():
     parser.add_argument("--against", nargs="+", default=[])
     args = post.parse_results_args(parser, TABLE_HEAD)
     if args.against:
-        return compare_runs(args.case, args.against, args.t0)
+        return compare_runs(args.case, args.against, args.t0, args.plot and args.label)
 
     res = summary(args.case, args.t0)
     if args.row:

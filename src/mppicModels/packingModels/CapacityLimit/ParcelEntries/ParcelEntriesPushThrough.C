@@ -31,6 +31,10 @@ Description
     (Chains only ahead of the entrant, or none for falling entrants, left
     the refusals of falling parcels alone and the Kuipers jet's bed was
     held up by them: docs/VALIDATION.md, issue 21, fourteenth pass.)
+    In parallel a chain stays on its processor, and an entrant from another
+    processor pushed on here has been counted back in its old cell there
+    for the step: over the Kuipers jet's statistics window 2 ranks do not
+    give the serial answer (docs/VALIDATION.md, issue 21, eighteenth pass).
 
 \*---------------------------------------------------------------------------*/
 
