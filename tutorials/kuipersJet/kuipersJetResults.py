@@ -344,19 +344,18 @@ def compare_runs(case, others, t0, label=None):
           "deltaP/weight | bed expansion [m]" % case)
     print("%s | - | - | %.3f | %.3f" % (case, base.get("dpRatio", float("nan")),
                                         base.get("expansion", float("nan"))))
+    runs = [(os.path.basename(os.path.abspath(case)), mine)]
     for other in others:
         theirs, res = sampled_profiles(other), summary(other, t0)
+        runs.append((os.path.basename(os.path.abspath(other)), theirs))
         cells = ["%.4f" % mean_abs_difference(*theirs[x], list(zip(*mine[x])))
                  if x in mine and x in theirs else "-" for x in (3.4, 6.4)]
         print("%s | %s | %s | %.3f | %.3f" % (
             other, cells[0], cells[1], res.get("dpRatio", float("nan")),
             res.get("expansion", float("nan"))))
     if label:
-        import kuipersJetPlots
-        runs = [(os.path.basename(os.path.abspath(c)), sampled_profiles(c))
-                for c in [case] + others]
-        kuipersJetPlots.plot_profiles(
-            runs, os.path.join(case, "kuipersJet_%s_profiles.png" % label))
+        from kuipersJetPlots import plot_profiles
+        plot_profiles(runs, os.path.join(case, "kuipersJet_%s_profiles.png" % label))
     return 0
 
 
