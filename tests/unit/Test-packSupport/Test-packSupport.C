@@ -38,6 +38,24 @@ Description
       falling U0 (0 -2 0), U (0.5 1.7 0) (bounced) -> (0.5 0 0);
       rising U0 (0 1 0), U (0.2 0.5 0) -> unchanged;
       rising U0 (0 1 0), U (0 -0.3 0) -> (0 0 0).
+    With a pack's drain d (PackDrain), g down, d = 0.3:
+      heldVelocity falling U0 (0 -2 0), U (0.5 1.7 0) -> (0.5 -0.3 0);
+      falling slower than d, U0 (0 -0.1 0), same U -> (0.5 -0.1 0);
+      restingVelocity (1 -2 0.5) -> (1 -0.3 0.5); (0 -0.1 0) unchanged.
+    PackDrain, drainTime 0.01, steps of dt 0.004 (filter weight 0.4):
+      step 1: cell 0 ends with one parcel of volume v that came down from
+        cell 4 (0.25 above: centre distance along g 0.25) and one that
+        stayed: u = v*0.25/(2v*0.004) = 31.25 m/s, d = 0.4*31.25 = 12.5;
+        cell 1 one parcel come up from cell 5: u = -62.5, d = -25, kept
+        0; cell 2 empty: 0;
+      step 2, nobody moves: cell 0 d = 12.5 - 0.4*12.5 = 7.5, cell 1
+        -15 (kept 0);
+      a step of dt 0.02 > drainTime (weight 1), cell 0's parcel down
+        again: d = 0.25/(2*0.02) = 6.25;
+      the field packDrain holds d (cell 0: 6.25, cell 1: 0 - 0 = 0 after
+        weight 1 with u = 0); followDrainingPacks false -> 0 everywhere.
+    Bad input: drainTime 0 and -1 -> FatalIOError naming the keyword,
+    the value and "> 0".
     Bad input: supportPatches (nowhere) -> FatalIOError naming the
     keyword, the value and the patches allowed; supportAngle 0 and 95 ->
     FatalIOError naming the keyword, the value and (0, 90].
@@ -55,6 +73,7 @@ Description
 
 #include "fvCFD.H"
 #include "PackSupport.H"
+#include "PackDrain.H"
 #include "cellRoom.H"
 #include "Tuple2.H"
 #include "unitTest.H"
@@ -85,6 +104,68 @@ bool heldRows
         ok = ok && support.held(column + 4*row) == rows.found(row);
     }
     return ok;
+}
+
+
+void checkPackDrain(const fvMesh& mesh)
+{
+    const scalar v = 1e-9;
+
+    dictionary coeffs;
+    coeffs.name() = "coloringFunctionCoeffs";
+    coeffs.add("followDrainingPacks", true);
+    coeffs.add("drainTime", 0.01);
+    PackDrain drain(mesh, coeffs);
+
+    drain.startTally();
+    drain.add(0, v, 0.25);
+    drain.add(0, v, 0);
+    drain.add(1, v, -0.25);
+    drain.endTally(0.004);
+    checkClose("PackDrain step 1: cell 0 d = 12.5", drain.velocity(0), 12.5);
+    checkTrue("PackDrain step 1: cell 1 (rising) 0", drain.velocity(1) == 0);
+    checkTrue("PackDrain step 1: cell 2 (empty) 0", drain.velocity(2) == 0);
+
+    drain.startTally();
+    drain.add(0, v, 0);
+    drain.add(0, v, 0);
+    drain.add(1, v, 0);
+    drain.endTally(0.004);
+    checkClose("PackDrain step 2: cell 0 d = 7.5", drain.velocity(0), 7.5);
+
+    drain.startTally();
+    drain.add(0, v, 0.25);
+    drain.add(0, v, 0);
+    drain.endTally(0.02);
+    checkClose("PackDrain dt > drainTime: d = 6.25", drain.velocity(0), 6.25);
+
+    const volScalarField& field =
+        mesh.lookupObject<volScalarField>("packDrain");
+    checkClose("packDrain field, cell 0", field[0], 6.25);
+    checkTrue("packDrain field, cell 1: 0", field[1] == 0);
+
+    dictionary off;
+    PackDrain none(mesh, off);
+    checkTrue("followDrainingPacks false: 0", none.velocity(0) == 0);
+
+    for (const scalar bad : {0.0, -1.0})
+    {
+        dictionary badTime;
+        badTime.name() = "coloringFunctionCoeffs";
+        badTime.add("drainTime", bad);
+        checkTrue
+        (
+            "drainTime " + Foam::name(bad) + ": FatalIOError",
+            raisesError
+            (
+                [&]() { PackDrain wrong(mesh, badTime); },
+                {
+                    "coloringFunctionCoeffs", "drainTime", Foam::name(bad),
+                    "> 0"
+                }
+            )
+        );
+    }
 }
 
 
@@ -204,6 +285,41 @@ int main(int argc, char *argv[])
         "heldVelocity rising (0 1 0), rules (0 -0.3 0) -> (0 0 0)",
         mag(turned) < 1e-15
     );
+
+    const vector drained =
+        support.heldVelocity(vector(0, -2, 0), vector(0.5, 1.7, 0), 0.3);
+    checkTrue
+    (
+        "heldVelocity falling (0 -2 0), drain 0.3 -> (0.5 -0.3 0)",
+        mag(drained - vector(0.5, -0.3, 0)) < 1e-15
+    );
+    const vector slower =
+        support.heldVelocity(vector(0, -0.1, 0), vector(0.5, 1.7, 0), 0.3);
+    checkTrue
+    (
+        "heldVelocity falling (0 -0.1 0), drain 0.3 -> (0.5 -0.1 0)",
+        mag(slower - vector(0.5, -0.1, 0)) < 1e-15
+    );
+    checkTrue
+    (
+        "restingVelocity (1 -2 0.5), drain 0.3 -> (1 -0.3 0.5)",
+        mag
+        (
+            support.restingVelocity(vector(1, -2, 0.5), 0.3)
+          - vector(1, -0.3, 0.5)
+        ) < 1e-15
+    );
+    checkTrue
+    (
+        "restingVelocity (0 -0.1 0), drain 0.3 unchanged",
+        mag
+        (
+            support.restingVelocity(vector(0, -0.1, 0), 0.3)
+          - vector(0, -0.1, 0)
+        ) < 1e-15
+    );
+
+    checkPackDrain(mesh);
 
     dictionary nowhere;
     nowhere.name() = "coloringFunctionCoeffs";

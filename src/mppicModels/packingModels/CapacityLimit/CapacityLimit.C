@@ -21,6 +21,7 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
     overfill_(readOverfill(coeffs)),
     entries_(),
     support_(mesh, coeffs),
+    drain_(mesh, coeffs),
     resting_()
 {
     entries_.setPushThrough(coeffs.lookupOrDefault("pushThrough", false));
@@ -37,6 +38,7 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
     overfill_(cl.overfill_),
     entries_(),
     support_(cl.support_),
+    drain_(cl.drain_),
     resting_()
 {}
 
@@ -171,6 +173,7 @@ void Foam::CapacityLimit<CloudType>::startStep
 )
 {
     entries_.update(cloud, closePackFraction, overfill_, deltaT);
+    deltaT_ = deltaT;
 
     if (entries_.pushThrough())
     {
@@ -209,6 +212,26 @@ void Foam::CapacityLimit<CloudType>::startStep
 template<class CloudType>
 void Foam::CapacityLimit<CloudType>::endStep(const CloudType& cloud)
 {
+    if (holdSupportedPacks_ && drain_.on())
+    {
+        // The step's moves from cell to cell along gravity (PackDrain)
+        const vectorField& C = cloud.mesh().cellCentres();
+        const vector g = cloud.g().value();
+        const vector gHat = g/max(mag(g), VSMALL);
+
+        drain_.startTally();
+        for (const parcelType& p : cloud)
+        {
+            const auto* e = entries_.find(p);
+            const scalar along =
+                e && e->admitted && e->from >= 0
+              ? (C[p.cell()] - C[e->from]) & gHat
+              : 0;
+            drain_.add(p.cell(), p.nParticle()*p.volume(), along);
+        }
+        drain_.endTally(deltaT_);
+    }
+
     entries_.clear();
     entries_.recordCells(cloud);
 }
@@ -240,10 +263,11 @@ Foam::vector Foam::CapacityLimit<CloudType>::move
         )
     )
     {
-        const vector held = support_.heldVelocity(p.U(), kept);
+        const label celli = entries_.finalCell(p);
+        const vector held =
+            support_.heldVelocity(p.U(), kept, drain_.velocity(celli));
 
         // The support stopped a fall: the cell rests on it this step
-        const label celli = entries_.finalCell(p);
         if
         (
             magSqr(held - kept) > 0

@@ -17,7 +17,7 @@ Foam::PackingModels::MfixSnider<CloudType>::keywords
     "slipVelocityFactor", "capFactor", "meanFreePathCap",
     "restWhereConverging", "releaseAbove", "collisionDamping", "capacityLimit",
     "holdSupportedPacks", "supportPatches", "supportAngle", "overfill",
-    "conserveMomentum"
+    "conserveMomentum", "followDrainingPacks", "drainTime"
 });
 
 

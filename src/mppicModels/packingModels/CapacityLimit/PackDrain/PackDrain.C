@@ -1,0 +1,110 @@
+/*---------------------------------------------------------------------------*\
+    mppicModels: MFiX-PIC dense-particle models for OpenFOAM
+    This file is part of the mppicModels project, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "PackDrain.H"
+#include "zeroGradientFvPatchFields.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::PackDrain::PackDrain(const fvMesh& mesh, const dictionary& coeffs)
+:
+    mesh_(mesh),
+    on_(coeffs.lookupOrDefault("followDrainingPacks", false)),
+    drainTime_(readDrainTime(coeffs)),
+    moved_(),
+    solids_()
+{
+    // Made (or read, on a restart) at the time the run starts from
+    if (on_)
+    {
+        drain();
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::PackDrain::readDrainTime(const dictionary& coeffs)
+{
+    const scalar drainTime = coeffs.lookupOrDefault<scalar>("drainTime", 0.1);
+
+    if (!(drainTime > 0))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Dictionary " << coeffs.name() << ", keyword drainTime: value "
+            << drainTime << " is not > 0 s" << exit(FatalIOError);
+    }
+
+    return drainTime;
+}
+
+
+Foam::volScalarField& Foam::PackDrain::drain() const
+{
+    if (!drain_)
+    {
+        drain_ = mesh_.getObjectPtr<volScalarField>("packDrain");
+    }
+    if (!drain_)
+    {
+        drain_ = new volScalarField
+        (
+            IOobject
+            (
+                "packDrain",
+                mesh_.time().timeName(),
+                mesh_,
+                IOobject::READ_IF_PRESENT,
+                IOobject::AUTO_WRITE
+            ),
+            mesh_,
+            dimensionedScalar(dimVelocity, Zero),
+            zeroGradientFvPatchScalarField::typeName
+        );
+        drain_->store();
+
+        if (drain_->headerOk())
+        {
+            Info<< "followDrainingPacks: the packs' drain read from "
+                << drain_->objectPath() << endl;
+        }
+    }
+    return *drain_;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::PackDrain::startTally()
+{
+    const label nCells = mesh_.nCells();
+    moved_.setSize(nCells);
+    solids_.setSize(nCells);
+    moved_ = Zero;
+    solids_ = Zero;
+}
+
+
+void Foam::PackDrain::endTally(const scalar dt)
+{
+    if (!(dt > 0))
+    {
+        return;
+    }
+
+    volScalarField& d = drain();
+    scalarField& drain = d.primitiveFieldRef();
+    const scalar weight = min(dt/drainTime_, scalar(1));
+    forAll(drain, celli)
+    {
+        const scalar u =
+            solids_[celli] > 0 ? moved_[celli]/(solids_[celli]*dt) : 0;
+        drain[celli] += weight*(u - drain[celli]);
+    }
+    d.correctBoundaryConditions();
+}
+
+
+// ************************************************************************* //
