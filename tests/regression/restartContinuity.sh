@@ -5,8 +5,9 @@
 # stop, gas included (issue 20):
 #   - mppicPimpleFoam on tutorials/validation/uniformFluidization (a
 #     bubbling bed, gas solved), with coloringFunction, with it and
-#     pushThrough (which must have pushed after the restart), and with
-#     mfixSnider:
+#     pushThrough (which must have pushed after the restart), with
+#     pushThrough and followDrainingPacks (packDrain read back, some cell
+#     draining; without the field the run differs), and with mfixSnider:
 #     0 -> 0.05 s at once, and 0 -> 0.025 s then continued (startFrom
 #     latestTime) to 0.05 s; both write ascii at 17 digits;
 #   - mppicReactingPimpleFoam on tutorials/verification/wetBulb (a droplet
@@ -92,6 +93,39 @@ else
     echo "FAIL pushThrough: no entrant pushed on after the restart"
     status=1
 fi
+
+# followDrainingPacks: the drain each cell's pack has (the field packDrain)
+# is written and read back; continued without it (the field deleted from
+# the written 0.025 s), the run must differ
+cloudEdit='s/^\( *conserveMomentum false;\)$/\1\n        pushThrough true;\n        followDrainingPacks true;/'
+cloudCheck='followDrainingPacks true;'
+for name in bed.drain bed.drainLost
+do
+    wholeAndContinued validation/uniformFluidization $name 17 \
+        0.025 0.05 "" -packing coloringFunction
+done
+cloudEdit=""
+check sameState "$runDir/bed.drain.whole" "$runDir/bed.drain.continued" \
+    0.05 1e-8 $bedFields || status=1
+grep -q "followDrainingPacks: the packs' drain read from" \
+    "$runDir/bed.drain.continued/log.continue" \
+    && echo "PASS followDrainingPacks: packDrain read on the restart" \
+    || { echo "FAIL followDrainingPacks: packDrain not read"; status=1; }
+drainMax=$(awk '/^internalField/ {on = 1; next} on == 1 && /^\(/ {on = 2; next}
+    /^\)/ {on = 0} on == 2 && $1 > m {m = $1} END {print m + 0}' \
+    "$runDir/bed.drain.continued/0.025/packDrain")
+awk -v m="$drainMax" 'BEGIN { exit !(m > 0) }' \
+    && echo "PASS followDrainingPacks: largest drain at 0.025 s $drainMax m/s (> 0)" \
+    || { echo "FAIL followDrainingPacks: no cell drains at 0.025 s"; status=1; }
+# the same run continued without the field: starts every drain at zero
+lost="$runDir/bed.drainLost.continued"
+rm -rf "$lost/0.0"[3-5]* "$lost/log.continue"
+rm -f "$lost/0.025/packDrain"
+(cd "$lost" && mppicPimpleFoam > log.continue 2>&1) || status=1
+grep -q "drain read from" "$lost/log.continue" \
+    && { echo "FAIL followDrainingPacks: a deleted packDrain was read"; status=1; }
+check differs "$runDir/bed.drain.whole" "$lost" 0.05 1e-8 $bedFields \
+    || status=1
 
 wholeAndContinued validation/uniformFluidization bed.sixDigits 6 \
     0.025 0.05 "" -packing coloringFunction
