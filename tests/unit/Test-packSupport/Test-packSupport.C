@@ -52,10 +52,8 @@ Description
         -15 (kept 0);
       a step of dt 0.02 > drainTime (weight 1), cell 0's parcel down
         again: d = 0.25/(2*0.02) = 6.25;
-      the field packDrain holds d (cell 0: 6.25, cell 1: 0 - 0 = 0 after
-        weight 1 with u = 0); followDrainingPacks false -> 0 everywhere.
-    Bad input: drainTime 0 and -1 -> FatalIOError naming the keyword,
-    the value and "> 0".
+      the field packDrain holds d (cell 0: 6.25, cell 1: 0); without
+        followDrainingPacks 0. drainTime 0 and -1 -> FatalIOError.
     Bad input: supportPatches (nowhere) -> FatalIOError naming the
     keyword, the value and the patches allowed; supportAngle 0 and 95 ->
     FatalIOError naming the keyword, the value and (0, 90].
