@@ -92,18 +92,7 @@ do
         editEntries "$cloudProps" "s/^\\( *conserveMomentum false;\\)\$/\\1\\n        impulse $method;\\n        reflection component;\\n        capacityLimit false;\\n        holdSupportedPacks false;/" \
             -E "impulse $method;|reflection component;|capacityLimit false;|holdSupportedPacks false;" 4
     fi
-    # (foamDictionary cannot address the regular-expression key "U.air.*"
-    # and would expand pFinal's $p)
-    sed -i -e '/^    p$/,/}/{' \
-        -e 's/GAMG;/PCG;/' \
-        -e 's/smoother .*;/preconditioner  DIC;/' \
-        -e 's/tolerance .*;/tolerance       1e-13;/' \
-        -e 's/relTol .*;/relTol          0;/' -e '}' \
-        -e '/"U.air\.\*"/,/}/{' \
-        -e 's/smoothSolver;/PBiCGStab;/' \
-        -e 's/smoother .*;/preconditioner  DILU;/' \
-        -e 's/tolerance .*;/tolerance       1e-13;/' -e '}' \
-        "$dir/system/fvSolution"
+    tightGasSolvers "$dir" || exit 1
 done
 sed -i -e 's/^numberOfSubdomains .*/numberOfSubdomains 16;/' \
     -e 's/^\( *n  *\)(.*);/\1(2 4 2);/' \

@@ -28,9 +28,8 @@ and prints:
   - bed expansion: the height where the time-averaged solids fraction,
     averaged across the width, drops below 0.05;
   - the mean absolute difference of the time-averaged profiles (left and
-    right of the jet averaged) from Kuipers' measured points, and the same
-    for MFiX-PIC's curve (kuipersJetProfiles.csv, copied from seed 1 Fig. 6);
-    only heights the profile reaches are compared;
+    right averaged) from Kuipers' points and MFiX-PIC's curve
+    (kuipersJetProfiles.csv, seed 1 Fig. 6), at heights the profile reaches;
   - the slab measure (kuipersJetSlabs.py): the share of the instants in the
     statistics window at which a packed slab lies over a gas void;
   - with packingMonitor writePackingForce: where the packing step acts, the

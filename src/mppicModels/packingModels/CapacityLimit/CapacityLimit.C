@@ -214,7 +214,8 @@ void Foam::CapacityLimit<CloudType>::endStep(const CloudType& cloud)
 {
     if (holdSupportedPacks_ && drain_.on())
     {
-        // The step's moves from cell to cell along gravity (PackDrain)
+        // The step's moves from cell to cell along gravity (PackDrain),
+        // also from a cell on another processor
         const vectorField& C = cloud.mesh().cellCentres();
         const vector g = cloud.g().value();
         const vector gHat = g/max(mag(g), VSMALL);
@@ -224,8 +225,8 @@ void Foam::CapacityLimit<CloudType>::endStep(const CloudType& cloud)
         {
             const auto* e = entries_.find(p);
             const scalar along =
-                e && e->admitted && e->from >= 0
-              ? (C[p.cell()] - C[e->from]) & gHat
+                e && e->admitted && (e->from >= 0 || e->remote >= 0)
+              ? (C[p.cell()] - entries_.fromCentre(cloud.mesh(), *e)) & gHat
               : 0;
             drain_.add(p.cell(), p.nParticle()*p.volume(), along);
         }

@@ -119,9 +119,7 @@ Foam::vector Foam::ParcelEntries<CloudType>::limitedCorrection
         // processor), aiming at its centre (a face or an edge/corner
         // neighbour), and not beyond it
         const bool here = e->from >= 0;
-        vector back =
-            (here ? mesh.cellCentres()[e->from] : origins_[e->remote].centre)
-          - x;
+        vector back = fromCentre(mesh, *e) - x;
         back /= max(mag(back), VSMALL);
 
         const scalar enter =
