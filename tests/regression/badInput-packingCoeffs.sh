@@ -5,6 +5,9 @@
 # naming it, 0.2 and [0, 0.1]; coloringFunction and mfixSnider with overfill 1.5 ->
 # FatalIOError naming overfill, 1.5 and [0, 1]; coloringFunction with
 # pushThrough sometimes -> FatalIOError naming pushThrough and sometimes;
+# coloringFunction and mfixSnider with followDrainingPacks true but
+# holdSupportedPacks false -> FatalIOError naming followDrainingPacks, true
+# and holdSupportedPacks (the drain acts on held packs only);
 # exit status 1, no crash (mppicPimpleFoam).
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
@@ -49,4 +52,17 @@ setEntry "$runDir/case" constant/kinematicCloudProperties \
     subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; pushThrough sometimes; }"
 runBroken "$runDir/case" mppicPimpleFoam
 check fatal "$runDir/case/log.broken" $rc "pushThrough" "sometimes" || status=1
+
+# followDrainingPacks without held packs (CapacityLimit), both models
+for model in coloringFunction mfixSnider
+do
+    setEntry "$runDir/case" constant/kinematicCloudProperties \
+        subModels/packingModel $model
+    setEntry "$runDir/case" constant/kinematicCloudProperties \
+        subModels/${model}Coeffs \
+        "{ closePackFraction 0.6; holdSupportedPacks false; followDrainingPacks true; }"
+    runBroken "$runDir/case" mppicPimpleFoam
+    check fatal "$runDir/case/log.broken" $rc "followDrainingPacks" "true" \
+        "holdSupportedPacks" || status=1
+done
 exit $status

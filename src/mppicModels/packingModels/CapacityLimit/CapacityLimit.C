@@ -25,6 +25,17 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
     resting_()
 {
     entries_.setPushThrough(coeffs.lookupOrDefault("pushThrough", false));
+
+    // The drain acts on held parcels only: asked for without them, it
+    // would be measured and written but change nothing
+    if (drain_.on() && !holdSupportedPacks_)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Dictionary " << coeffs.name()
+            << ", keyword followDrainingPacks: value true needs held packs"
+            << " (holdSupportedPacks true and capacityLimit true)"
+            << exit(FatalIOError);
+    }
 }
 
 
