@@ -1,6 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # decomposeByParcels <runDir>
+# processes: 2 (MPI ranks at most; tests/Alltest runs it alone)
 # mppicDecomposeByParcels on tutorials/validation/uniformFluidization: 20 x 80
 # x 2 cubic cells (3200, rows of 40), a bed 24 rows high of exactly 8
 # parcels per cell (960 cells, 7680 parcels). Cut in two along y with

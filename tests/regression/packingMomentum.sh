@@ -1,6 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # packingMomentum <runDir>
+# processes: 2 (MPI ranks at most; tests/Alltest runs it alone)
 # tutorials/verification/packingMomentum: a layer (7.5e-4 kg at
 # (0.1, -0.5, 0) m/s) thrown onto a pack at rest in a box periodic in x and
 # y, no forces, 40 steps. With coloringFunction conserveMomentum true the

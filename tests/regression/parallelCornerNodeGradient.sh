@@ -1,6 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # parallelCornerNodeGradient <runDir>
+# processes: 16 (MPI ranks at most; tests/Alltest runs it alone)
 # parallelLinearHat.sh's serial / 2 / 16-process comparison (20 steps of
 # uniformFluidization, gas solved to 1e-13) with the gas fraction deposited
 # with averagingMethod cornerNodes and coloringFunction as MFiX-PIC applies

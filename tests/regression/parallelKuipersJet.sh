@@ -1,6 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # parallelKuipersJet <runDir>
+# processes: 3 (MPI ranks at most; tests/Alltest runs it alone)
 # tutorials/kuipersJet for 0.05 s (100 steps) decomposed into 3 with simple
 # (1 3 1): two processor boundaries across the column, at 1/3 and 2/3 of its
 # height, the lower one through the packed bed; 3 processes on the 2 cores.

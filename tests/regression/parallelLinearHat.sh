@@ -1,6 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # parallelLinearHat <runDir>
+# processes: 16 (MPI ranks at most; tests/Alltest runs it alone)
 # tutorials/validation/uniformFluidization with mfixSnider (-packing
 # mfixSnider: the linear-hat deposit for its stress, its mean solids velocity
 # and the gas fraction), the gas velocity and fraction interpolated to the

@@ -1,6 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # parallelPackDrain <runDir>
+# processes: 2 (MPI ranks at most; tests/Alltest runs it alone)
 # followDrainingPacks across a processor face: tutorials/settlingColumn with
 # coloringFunction (close pack 0.6, e1 0.85, e2 0.9) and followDrainingPacks
 # for 0.2 s, serial and on 2 processes (the tutorial's simple (1 2 1): a

@@ -1,6 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # parallelPushThrough <runDir>
+# processes: 16 (MPI ranks at most; tests/Alltest runs it alone)
 # tutorials/validation/uniformFluidization with coloringFunction and
 # pushThrough for 0.01 s, serial, on 2 and on 16 processes
 # (parallelLinearHat.sh pushThrough): chains on every decomposition, the

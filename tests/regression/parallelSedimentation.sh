@@ -1,6 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # parallelSedimentation <runDir>
+# processes: 4 (MPI ranks at most; tests/Alltest runs it alone)
 # tutorials/verification/sedimentation with coloringFunction decomposed with
 # simple into 2 halves side by side (2 1 1), so that the processor boundary
 # runs vertically through the settled bed (1 s, the full case), and into 4

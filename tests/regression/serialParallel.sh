@@ -1,6 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # serialParallel <runDir>
+# processes: 2 (MPI ranks at most; tests/Alltest runs it alone)
 # The settling column with mppicPimpleFoam for 0.2 s, serial and decomposed
 # into 2 subdomains (decomposePar simple, mpirun -np 2, reconstructPar):
 # the same parcel count and, parcel by parcel, the same cloud mass, exactly.
