@@ -7,7 +7,9 @@
 # pushThrough sometimes -> FatalIOError naming pushThrough and sometimes;
 # coloringFunction and mfixSnider with followDrainingPacks true but
 # holdSupportedPacks false -> FatalIOError naming followDrainingPacks, true
-# and holdSupportedPacks (the drain acts on held packs only);
+# and holdSupportedPacks (the drain acts on held packs only); both models
+# with freePackReactionsToGas true but conserveMomentum false ->
+# FatalIOError naming freePackReactionsToGas, true and conserveMomentum;
 # exit status 1, no crash (mppicPimpleFoam).
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
@@ -64,5 +66,19 @@ do
     runBroken "$runDir/case" mppicPimpleFoam
     check fatal "$runDir/case/log.broken" $rc "followDrainingPacks" "true" \
         "holdSupportedPacks" || status=1
+done
+
+# freePackReactionsToGas without conserveMomentum (MfixPackingModel), both
+# models
+for model in coloringFunction mfixSnider
+do
+    setEntry "$runDir/case" constant/kinematicCloudProperties \
+        subModels/packingModel $model
+    setEntry "$runDir/case" constant/kinematicCloudProperties \
+        subModels/${model}Coeffs \
+        "{ closePackFraction 0.6; freePackReactionsToGas true; }"
+    runBroken "$runDir/case" mppicPimpleFoam
+    check fatal "$runDir/case/log.broken" $rc "freePackReactionsToGas" \
+        "true" "conserveMomentum" || status=1
 done
 exit $status

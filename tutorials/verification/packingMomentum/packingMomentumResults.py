@@ -13,6 +13,16 @@ pack takes the opposite impulse and P stays P0 to round-off while the
 collisions (e1 = 0.5) remove kinetic energy; without it, P changes by the
 monitor's packing momentum summed over the steps.
 
+With freePackReactionsToGas (./Allrun gas) the packs, which no support
+holds here, hand their share to the gas: P + G stays P0, G the monitor's
+gasPackingMomentum summed over the steps. Hand bounds for G_y: each layer
+parcel is turned once by the pack at rest, dU_y = (1 + e1)*0.5 = 0.75 m/s,
+and keeps f = M/(M + m_in) of it, where M is the pack cell's mass (0.6 of
+the cell, 1.875e-4 kg) and m_in the mass turned into it in the step, at
+most the layer's column over the cell (0.15 of two cells, 9.375e-5 kg): f
+lies in [2/3, 1], the pack's share f*m*dU goes to the gas, so
+    G_y = -f*m_layer*0.75  lies in  [-5.625e-4, -3.75e-4] kg m/s.
+
 The monitor's field packingForce (writePackingForce, written at 0.02 and
 0.04 s) times the cell volume (blockMeshDict: 0.04*0.04*0.005 m3 in 8*8*1
 cells, 1.25e-7 m3) and the 0.02 s since the previous written time, summed
@@ -86,12 +96,18 @@ def conserve_setting(path="constant/kinematicCloudProperties"):
     return post.dict_entry(path, "conserveMomentum") in ("true", "on", "yes")
 
 
+def to_gas_setting(path="constant/kinematicCloudProperties"):
+    return post.dict_entry(path, "freePackReactionsToGas") \
+        in ("true", "on", "yes")
+
+
 def norm(v):
     return sum(x*x for x in v)**0.5
 
 
 def main(argv):
     conserve = conserve_setting()
+    to_gas = to_gas_setting()
     momentum, energy = read_log()
     packing, max_alpha, rows = read_monitor()
     scale = norm(P0)
@@ -99,6 +115,10 @@ def main(argv):
     # The first step injects; the packing of step k changes P(k-1) to P(k)
     drift = max(norm([a - b for a, b in zip(p, momentum[0])])
                 for p in momentum)/scale
+    # The packs' reactions handed to the gas (monitor columns 14-16)
+    handed = [sum(r[14 + i] for r in rows[1:]) for i in range(3)]
+    total_drift = norm([a + b - c for a, b, c
+                        in zip(momentum[-1], handed, momentum[0])])/scale
     summed = [sum(r[i] for r in packing[1:]) for i in range(3)]
     change = [a - b for a, b in zip(momentum[-1], momentum[0])]
     mismatch = norm([a - b for a, b in zip(change, summed)])/scale
@@ -110,6 +130,7 @@ def main(argv):
 
     lines = [
         "conserveMomentum               %s" % ("true" if conserve else "false"),
+        "freePackReactionsToGas         %s" % ("true" if to_gas else "false"),
         "steps                          %d" % len(momentum),
         "initial momentum [kg m/s]      (%.6e %.6e %.6e)" % tuple(momentum[0]),
         "hand value P0                  (%.6e %.6e %.6e)" % P0,
@@ -117,6 +138,8 @@ def main(argv):
         "max |P - P(0)|/|P0|            %.3e" % drift,
         "summed packing momentum        (%.6e %.6e %.6e)" % tuple(summed),
         "|dP - summed|/|P0|             %.3e" % mismatch,
+        "summed to the gas              (%.6e %.6e %.6e)" % tuple(handed),
+        "|P + to gas - P(0)|/|P0|       %.3e" % total_drift,
         "final/initial kinetic energy   %.4f" % energy_ratio,
         "max cell solids fraction       %.15g" % max_alpha,
     ] + [
@@ -138,7 +161,14 @@ def main(argv):
         (field_mismatch < 1e-10, "packingForce field equals the monitor's"
          " sum over each written interval"),
     ]
-    if conserve:
+    if to_gas:
+        checks += [
+            (total_drift < 1e-12, "cloud + reactions handed to the gas"
+             " constant to round-off"),
+            (-5.625e-4 <= handed[1] <= -3.75e-4, "the gas took the packs'"
+             " share, within the hand bounds [-5.625e-4, -3.75e-4]"),
+        ]
+    elif conserve:
         checks += [
             (drift < 1e-12, "momentum constant to round-off"),
             (energy_ratio < 0.9, "collisions took kinetic energy"),

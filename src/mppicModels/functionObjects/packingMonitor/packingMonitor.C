@@ -215,7 +215,8 @@ void Foam::functionObjects::packingMonitor::writeFileHeader(Ostream& os)
             "nCellsAboveClosePack", "minGasFraction", "nFastParcels",
             "packingMomentumX", "packingMomentumY", "packingMomentumZ",
             "wallPackingMomentumX", "wallPackingMomentumY",
-            "wallPackingMomentumZ"
+            "wallPackingMomentumZ", "gasPackingMomentumX",
+            "gasPackingMomentumY", "gasPackingMomentumZ"
         }
     )
     {
@@ -320,7 +321,11 @@ bool Foam::functionObjects::packingMonitor::write()
             << tab << s.maxAlphaAveraged << tab << s.maxAlphaCell
             << tab << s.nCellsAboveClosePack << tab << 1 - s.maxAlphaCell
             << tab << s.nFastParcels;
-        for (const vector& v : {s.packingMomentum, s.wallPackingMomentum})
+        for
+        (
+            const vector& v
+          : {s.packingMomentum, s.wallPackingMomentum, s.gasPackingMomentum}
+        )
         {
             os  << tab << v.x() << tab << v.y() << tab << v.z();
         }

@@ -150,6 +150,13 @@ Foam::functionObjects::packingMonitor::evaluate(const CloudType& cloud) const
         }
     }
 
+    // The packs' reactions our models handed the gas instead
+    const auto* ours = ourPackingModel(cloud);
+    if (ours && ours->cellGasMomentum().size() == mesh_.nCells())
+    {
+        s.gasPackingMomentum = sum(ours->cellGasMomentum());
+    }
+
     reduce(s.nParcels, sumOp<label>());
     reduce(s.mass, sumOp<scalar>());
     reduce(s.maxAlphaCell, maxOp<scalar>());
@@ -157,6 +164,7 @@ Foam::functionObjects::packingMonitor::evaluate(const CloudType& cloud) const
     reduce(s.nFastParcels, sumOp<label>());
     reduce(s.packingMomentum, sumOp<vector>());
     reduce(s.wallPackingMomentum, sumOp<vector>());
+    reduce(s.gasPackingMomentum, sumOp<vector>());
 
     s.maxAlphaAveraged = maxAveragedSolidsFraction(cloud);
 

@@ -25,8 +25,21 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     conserveMomentum_
     (
         coeffs_.template lookupOrDefault<bool>("conserveMomentum", false)
+    ),
+    freePackReactionsToGas_
+    (
+        coeffs_.template lookupOrDefault<bool>("freePackReactionsToGas", false)
     )
-{}
+{
+    // Without conserveMomentum no pack takes a reaction to hand on
+    if (freePackReactionsToGas_ && !conserveMomentum_)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Dictionary " << coeffs_.name()
+            << ", keyword freePackReactionsToGas: value true needs"
+            << " conserveMomentum true" << exit(FatalIOError);
+    }
+}
 
 
 template<class CloudType>
@@ -37,7 +50,8 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
 :
     PackingModel<CloudType>(cm),
     coeffs_(cm.coeffs_),
-    conserveMomentum_(cm.conserveMomentum_)
+    conserveMomentum_(cm.conserveMomentum_),
+    freePackReactionsToGas_(cm.freePackReactionsToGas_)
 {}
 
 
@@ -331,6 +345,8 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheFields
     {
         cellAddedMomentum_.setSize(mesh.nCells());
         cellAddedMomentum_ = Zero;
+        cellGasMomentum_.setSize(mesh.nCells());
+        cellGasMomentum_ = Zero;
         addedMomentumStep_ = gasStep;
     }
 

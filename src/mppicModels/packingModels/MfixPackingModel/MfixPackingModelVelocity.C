@@ -59,6 +59,22 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::applyReactions
         {
             this->recordVelocityChange(p, U - from);
             p.U() = U;
+        },
+        [this, &limit]
+        (
+            const typename CloudType::parcelType& p,
+            const vector& momentum
+        )
+        {
+            // A pack no support holds this step is carried by the gas
+            const label celli = p.cell();
+            if (!freePackReactionsToGas_ || limit.resting(celli))
+            {
+                return false;
+            }
+            this->owner().UTrans()[celli] += momentum;
+            cellGasMomentum_[celli] += momentum;
+            return true;
         }
     );
 }

@@ -17,7 +17,8 @@ Foam::PackingModels::MfixSnider<CloudType>::keywords
     "slipVelocityFactor", "capFactor", "meanFreePathCap",
     "restWhereConverging", "releaseAbove", "collisionDamping", "capacityLimit",
     "holdSupportedPacks", "supportPatches", "supportAngle", "overfill",
-    "conserveMomentum", "followDrainingPacks", "drainTime"
+    "conserveMomentum", "freePackReactionsToGas", "followDrainingPacks",
+    "drainTime"
 });
 
 

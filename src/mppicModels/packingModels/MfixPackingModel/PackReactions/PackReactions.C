@@ -35,12 +35,13 @@ void Foam::PackReactions<CloudType>::give
 
 
 template<class CloudType>
-template<class Settle, class Write>
+template<class Settle, class Write, class ToGas>
 void Foam::PackReactions<CloudType>::apply
 (
     CloudType& cloud,
     const Settle& settle,
-    const Write& write
+    const Write& write,
+    const ToGas& toGas
 )
 {
     const bool anyTurned = returnReduce(turned_.size(), sumOp<label>()) > 0;
@@ -178,10 +179,17 @@ void Foam::PackReactions<CloudType>::apply
             }
         }
 
+        // The parcel's share of its own pack's reaction, unless the gas of
+        // its cell takes it
         const label celli = p.cell();
         if (packMass[celli] > 0)
         {
-            dU -= kept[celli]*packImpulse[celli]/packMass[celli];
+            const vector share =
+                kept[celli]*packImpulse[celli]/packMass[celli];
+            if (!toGas(p, -p.nParticle()*p.mass()*share))
+            {
+                dU -= share;
+            }
         }
         write(p, U0, settle(p, U0 + dU));
     }
