@@ -216,8 +216,13 @@ def summary(case, t0=None):
         res["dpAmplitude"] = 0.5*(percentile(window, 95) - percentile(window, 5))
         rows = [r for r in mon if r[0] >= t0 - 1e-9]
         res["packing"] = post.packing_force(rows, mon[0][2], G)
+        # handed to the gas (freePackReactionsToGas): it pushes the gas as
+        # the drag's reaction does, so the drag on the parcels is
+        # dpRatio + toGas
+        res["toGas"] = post.gas_packing_force(rows, mon[0][2], G)
         rest = post.weight_rest(case, t0, mon[-1][0],
-                                res["dpRatio"] + res["packing"], mon[0][2], G)
+                                res["dpRatio"] + res["toGas"]
+                                + res["packing"], mon[0][2], G)
         if rest is not None:
             res["walls"] = rest
     times = time_dirs(case)
@@ -285,6 +290,10 @@ def print_report(res, label):
               " %s" % (fmt(res, "dpRatio", "%.3f"),
                                fmt(res, "packing", "%.3f"),
                                fmt(res, "walls", "%.3f")))
+        if res.get("toGas"):
+            print("  the packs' reactions handed to the gas %.3f of the weight"
+                  " (the gas takes it; the drag on the parcels is the gas's share"
+                  " plus this)" % res["toGas"])
     if "forceSplit" in res:
         print("  where the packing step acts (packingForce, %d written times): %s"
               % (res["forceGrid"][0],

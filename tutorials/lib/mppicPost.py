@@ -28,6 +28,10 @@ Statistics:
 A bed's vertical momentum budget over a window (packingMonitor's columns):
     packing_force(rows, mass)          the packing step's mean upward force
                                        over the cloud's weight
+    gas_packing_force(rows, mass)      the part of the packs' reactions
+                                       handed to the gas instead
+                                       (freePackReactionsToGas): inside the
+                                       gas's share, not on the parcels
     cloud_momentum(case, time)         the cloud's vertical momentum written
                                        at a time
     weight_rest(case, t0, t1, carried, mass)
@@ -51,7 +55,7 @@ import sys
 import numpy as np
 
 # packingMonitor.dat columns (src/mppicModels/functionObjects/packingMonitor)
-MONITOR_MASS, MONITOR_PACKING_Y = 2, 9
+MONITOR_MASS, MONITOR_PACKING_Y, MONITOR_GAS_PACKING_Y = 2, 9, 15
 
 
 # * * * * * * * * * * * * * * * * Readers  * * * * * * * * * * * * * * * * * #
@@ -295,16 +299,28 @@ def fit_through_origin(points):
 
 # * * * * * * * * * * * * * A bed's momentum budget * * * * * * * * * * * * * #
 
-def packing_force(rows, mass=None, g=9.81):
+def packing_force(rows, mass=None, g=9.81, column=MONITOR_PACKING_Y):
     """The packing step's mean upward force over the cloud's weight: the
     vertical momentum it added (packingMonitor, every step) over the
-    window's duration, over M g (M: the given mass, else the last row's)."""
+    window's duration, over M g (M: the given mass, else the last row's).
+    column: the monitor's column summed (rows without it count 0)."""
     if len(rows) < 2:
         return float("nan")
     duration = rows[-1][0] - rows[0][0] + (rows[1][0] - rows[0][0])
     if mass is None:
         mass = rows[-1][MONITOR_MASS]
-    return sum(r[MONITOR_PACKING_Y] for r in rows)/duration/(mass*g)
+    return sum(r[column] if len(r) > column else 0.0
+               for r in rows)/duration/(mass*g)
+
+
+def gas_packing_force(rows, mass=None, g=9.81):
+    """The packs' reactions handed to the gas (packingMonitor's
+    gasPackingMomentum, freePackReactionsToGas) as a mean upward force over
+    the weight; 0 for monitors written before that column. It pushes the
+    gas as the drag's reaction does: the drag on the parcels is the
+    pressure drop's share plus this (pass both, with the packing force, to
+    weight_rest)."""
+    return packing_force(rows, mass, g, MONITOR_GAS_PACKING_Y)
 
 
 def cloud_momentum(case, time, cloud="kinematicCloud"):

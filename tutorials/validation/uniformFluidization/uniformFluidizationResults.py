@@ -148,10 +148,16 @@ def summary(case, t0=None):
     max_cell = max(r[4] for r in rows) if rows else float("nan")
     max_field = max(r[3] for r in monitor(case))
     packing = post.packing_force(rows)
-    walls = post.weight_rest(case, t0, series[-1][0], mean + packing,
+    # The packs' reactions handed to the gas push it as the drag's
+    # reaction does: deltaP = drag - to_gas, so the drag on the parcels is
+    # the pressure drop's share plus to_gas
+    to_gas = post.gas_packing_force(rows)
+    walls = post.weight_rest(case, t0, series[-1][0],
+                             mean + to_gas + packing,
                              rows[-1][2]) if rows else None
     return {"t0": t0, "t1": series[-1][0], "ratio": mean, "std": std,
             "error": error, "maxCell": max_cell, "packing": packing,
+            "toGas": to_gas,
             "walls": walls, "series": everything, "maxField": max_field,
             "travel": median_travel(case)}
 
@@ -265,6 +271,10 @@ def main():
               % (args.label, res["t0"], res["t1"], res["ratio"], res["std"],
                  res["error"], res["packing"], "-" if res["walls"] is None
                  else "%.4f" % res["walls"], res["maxCell"], res["maxField"]))
+        if res["toGas"]:
+            print("%s: the packs' reactions handed to the gas %.4f x weight "
+                  "(the gas takes it: the drag on the parcels is the "
+                  "gas's share plus this)" % (args.label, res["toGas"]))
         if res["travel"]:
             print("%s: the parcels moved a median %.1f mm/s between %g and "
                   "%g s" % (args.label, 1e3*res["travel"][2],
