@@ -14,7 +14,8 @@
 # momentum plus the monitor's summed gasPackingMomentum stays P0 to 1e-12
 # (measured 2.8e-16), and that sum's y lies within the hand bounds
 # [-5.625e-4, -3.75e-4] kg m/s (packingMomentumResults.py; measured
-# -5.278e-4; 0 if the pack's parcels took the share: the check can fail).
+# -5.278e-4; 0 if the pack's parcels took the share: the check can fail);
+# the same on 2 processes, with the gas's share the serial run's to 1e-12.
 # Then conserveMomentum false with solids sub-cycling (CFL 0.02: 3 to 5
 # sub-steps per gas step): the monitor's packing momentum is the gas step's,
 # summed over its sub-steps, so the same budget closes (before 2026-11-26 it
@@ -74,6 +75,30 @@ then
     echo "PASS final kinetic energy serial $serialEnergy, 2 processes $parallelEnergy"
 else
     echo "FAIL final kinetic energy serial $serialEnergy, 2 processes $parallelEnergy"
+    status=1
+fi
+
+# The packs' reactions to the gas on 2 processes: the same checks, and the
+# gas's summed share (packingMomentum.txt) the serial run's to 1e-12 relative
+case="$runDir/gas.parallel"
+copyTutorial verification/packingMomentum "$case"
+runAllrun "$case" gas -parallel || exit 1
+[ -d "$case/processor1" ] || { echo "no parallel run"; exit 1; }
+(cd "$case" && /usr/bin/python3 packingMomentumResults.py --check) || status=1
+gasShare()
+{
+    sed -n 's/^summed to the gas *(\(.*\))$/\1/p' "$1/packingMomentum.txt" \
+        | awk '{ print $2 }'
+}
+serialGas=$(gasShare "$runDir/gas")
+parallelGas=$(gasShare "$case")
+if awk -v a="$serialGas" -v b="$parallelGas" \
+    'BEGIN { d = a - b; if (d < 0) d = -d; m = (a < 0 ? -a : a);
+             exit !(m > 0 && d <= 1e-12*m) }'
+then
+    echo "PASS gas's share (y) serial $serialGas, 2 processes $parallelGas"
+else
+    echo "FAIL gas's share (y) serial $serialGas, 2 processes $parallelGas"
     status=1
 fi
 exit $status

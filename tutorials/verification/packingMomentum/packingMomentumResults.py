@@ -138,7 +138,7 @@ def main(argv):
         "max |P - P(0)|/|P0|            %.3e" % drift,
         "summed packing momentum        (%.6e %.6e %.6e)" % tuple(summed),
         "|dP - summed|/|P0|             %.3e" % mismatch,
-        "summed to the gas              (%.6e %.6e %.6e)" % tuple(handed),
+        "summed to the gas              (%.15e %.15e %.15e)" % tuple(handed),
         "|P + to gas - P(0)|/|P0|       %.3e" % total_drift,
         "final/initial kinetic energy   %.4f" % energy_ratio,
         "max cell solids fraction       %.15g" % max_alpha,
