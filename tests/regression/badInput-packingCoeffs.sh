@@ -36,17 +36,26 @@ runBroken "$runDir/case" mppicPimpleFoam
 check fatal "$runDir/case/log.broken" $rc "randomVelocity" "0.2" "[0, 0.1]" \
     || status=1
 
-# overfill outside [0, 1] (CapacityLimit), both models
-for model in coloringFunction mfixSnider
-do
-    setEntry "$runDir/case" constant/kinematicCloudProperties \
-        subModels/packingModel $model
-    setEntry "$runDir/case" constant/kinematicCloudProperties \
-        subModels/${model}Coeffs "{ closePackFraction 0.6; overfill 1.5; }"
-    runBroken "$runDir/case" mppicPimpleFoam
-    check fatal "$runDir/case/log.broken" $rc "overfill" "1.5" "[0, 1]" \
-        || status=1
-done
+# Both models with the given entries stop naming the given words:
+# brokenInBoth <entries> <word>...
+brokenInBoth()
+{
+    local model entries="$1"
+    shift
+    for model in coloringFunction mfixSnider
+    do
+        setEntry "$runDir/case" constant/kinematicCloudProperties \
+            subModels/packingModel $model
+        setEntry "$runDir/case" constant/kinematicCloudProperties \
+            subModels/${model}Coeffs "{ closePackFraction 0.6; $entries }"
+        runBroken "$runDir/case" mppicPimpleFoam
+        check fatal "$runDir/case/log.broken" $rc "$@" || status=1
+    done
+}
+
+# overfill outside [0, 1] (CapacityLimit)
+brokenInBoth "overfill 1.5;" "overfill" "1.5" "[0, 1]"
+
 # pushThrough not a switch (read by CapacityLimit)
 setEntry "$runDir/case" constant/kinematicCloudProperties \
     subModels/packingModel coloringFunction
@@ -55,30 +64,11 @@ setEntry "$runDir/case" constant/kinematicCloudProperties \
 runBroken "$runDir/case" mppicPimpleFoam
 check fatal "$runDir/case/log.broken" $rc "pushThrough" "sometimes" || status=1
 
-# followDrainingPacks without held packs (CapacityLimit), both models
-for model in coloringFunction mfixSnider
-do
-    setEntry "$runDir/case" constant/kinematicCloudProperties \
-        subModels/packingModel $model
-    setEntry "$runDir/case" constant/kinematicCloudProperties \
-        subModels/${model}Coeffs \
-        "{ closePackFraction 0.6; holdSupportedPacks false; followDrainingPacks true; }"
-    runBroken "$runDir/case" mppicPimpleFoam
-    check fatal "$runDir/case/log.broken" $rc "followDrainingPacks" "true" \
-        "holdSupportedPacks" || status=1
-done
+# followDrainingPacks without held packs (CapacityLimit)
+brokenInBoth "holdSupportedPacks false; followDrainingPacks true;" \
+    "followDrainingPacks" "true" "holdSupportedPacks"
 
-# freePackReactionsToGas without conserveMomentum (MfixPackingModel), both
-# models
-for model in coloringFunction mfixSnider
-do
-    setEntry "$runDir/case" constant/kinematicCloudProperties \
-        subModels/packingModel $model
-    setEntry "$runDir/case" constant/kinematicCloudProperties \
-        subModels/${model}Coeffs \
-        "{ closePackFraction 0.6; freePackReactionsToGas true; }"
-    runBroken "$runDir/case" mppicPimpleFoam
-    check fatal "$runDir/case/log.broken" $rc "freePackReactionsToGas" \
-        "true" "conserveMomentum" || status=1
-done
+# freePackReactionsToGas without conserveMomentum (MfixPackingModel)
+brokenInBoth "freePackReactionsToGas true;" \
+    "freePackReactionsToGas" "true" "conserveMomentum"
 exit $status
