@@ -10,6 +10,8 @@
 # and holdSupportedPacks (the drain acts on held packs only); both models
 # with freePackReactionsToGas true but conserveMomentum false ->
 # FatalIOError naming freePackReactionsToGas, true and conserveMomentum;
+# mfixSnider with freePackReactionsToGas true (and conserveMomentum) ->
+# FatalIOError naming freePackReactionsToGas, true and mfixSnider;
 # exit status 1, no crash (mppicPimpleFoam).
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
@@ -71,4 +73,14 @@ brokenInBoth "holdSupportedPacks false; followDrainingPacks true;" \
 # freePackReactionsToGas without conserveMomentum (MfixPackingModel)
 brokenInBoth "freePackReactionsToGas true;" \
     "freePackReactionsToGas" "true" "conserveMomentum"
+
+# freePackReactionsToGas is coloringFunction's: mfixSnider refuses it
+setEntry "$runDir/case" constant/kinematicCloudProperties \
+    subModels/packingModel mfixSnider
+setEntry "$runDir/case" constant/kinematicCloudProperties \
+    subModels/mfixSniderCoeffs \
+    "{ closePackFraction 0.6; conserveMomentum true; freePackReactionsToGas true; }"
+runBroken "$runDir/case" mppicPimpleFoam
+check fatal "$runDir/case/log.broken" $rc "freePackReactionsToGas" "true" \
+    "mfixSnider" || status=1
 exit $status

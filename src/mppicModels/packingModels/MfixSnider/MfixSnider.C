@@ -42,6 +42,17 @@ Foam::PackingModels::MfixSnider<CloudType>::checkedCoeffs
                 << exit(FatalIOError);
         }
     }
+
+    // The gas cannot take the limiter's reactions at once: on MFiX-PIC's
+    // deposit the uniform bed's gas diverged within 0.04 s (issue 21)
+    if (coeffs.lookupOrDefault<bool>("freePackReactionsToGas", false))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Dictionary " << coeffs.name()
+            << ", keyword freePackReactionsToGas: value true is not"
+            << " available with mfixSnider (allowed: false)"
+            << exit(FatalIOError);
+    }
     return coeffs;
 }
 
