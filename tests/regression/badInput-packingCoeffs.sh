@@ -10,6 +10,8 @@
 # and holdSupportedPacks (the drain acts on held packs only); both models
 # with freePackReactionsToGas true but conserveMomentum false ->
 # FatalIOError naming freePackReactionsToGas, true and conserveMomentum;
+# coloringFunction with freePackReactionsToGas sometimes -> FatalIOError
+# naming it and sometimes;
 # mfixSnider with freePackReactionsToGas true (and conserveMomentum) ->
 # FatalIOError naming freePackReactionsToGas, true and mfixSnider;
 # exit status 1, no crash (mppicPimpleFoam).
@@ -65,6 +67,11 @@ setEntry "$runDir/case" constant/kinematicCloudProperties \
     subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; pushThrough sometimes; }"
 runBroken "$runDir/case" mppicPimpleFoam
 check fatal "$runDir/case/log.broken" $rc "pushThrough" "sometimes" || status=1
+setEntry "$runDir/case" constant/kinematicCloudProperties \
+    subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; conserveMomentum true; freePackReactionsToGas sometimes; }"
+runBroken "$runDir/case" mppicPimpleFoam
+check fatal "$runDir/case/log.broken" $rc "freePackReactionsToGas" "sometimes" \
+    || status=1
 
 # followDrainingPacks without held packs (CapacityLimit)
 brokenInBoth "holdSupportedPacks false; followDrainingPacks true;" \
