@@ -7,7 +7,8 @@
 #     bubbling bed, gas solved), with coloringFunction, with it and
 #     pushThrough (which must have pushed after the restart), with
 #     pushThrough and followDrainingPacks (packDrain read back, some cell
-#     draining; without the field the run differs), and with mfixSnider:
+#     draining; without the field the run differs), with
+#     freePackReactionsToGas (-packsToGas), and with mfixSnider:
 #     0 -> 0.05 s at once, and 0 -> 0.025 s then continued (startFrom
 #     latestTime) to 0.05 s; both write ascii at 17 digits;
 #   - mppicReactingPimpleFoam on tutorials/verification/wetBulb (a droplet
@@ -126,6 +127,25 @@ grep -q "drain read from" "$lost/log.continue" \
     && { echo "FAIL followDrainingPacks: a deleted packDrain was read"; status=1; }
 check differs "$runDir/bed.drain.whole" "$lost" 0.05 1e-8 $bedFields \
     || status=1
+
+# freePackReactionsToGas (-packsToGas: conserving packs whose free packs
+# hand their reactions to the gas, followDrainingPacks, PIMPLE
+# balanceImplicitDrag): the rule keeps nothing across steps, so the
+# continued run must be the whole one; the gas must take some share after
+# the restart (packingMonitor's gasPackingMomentumY, column 16)
+wholeAndContinued validation/uniformFluidization bed.packsToGas 17 \
+    0.025 0.05 "" -packsToGas
+check sameState "$runDir/bed.packsToGas.whole" \
+    "$runDir/bed.packsToGas.continued" 0.05 1e-8 $bedFields || status=1
+toGasAfter=$(awk '!/^#/ && $1 > 0.025 && $16 != 0 {n++} END {print n + 0}' \
+    "$runDir/bed.packsToGas.continued/postProcessing/packingMonitor/0.025/packingMonitor.dat")
+if [ "$toGasAfter" -gt 0 ]
+then
+    echo "PASS freePackReactionsToGas: the gas took a share at $toGasAfter steps after the restart (> 0)"
+else
+    echo "FAIL freePackReactionsToGas: the gas took no share after the restart"
+    status=1
+fi
 
 wholeAndContinued validation/uniformFluidization bed.sixDigits 6 \
     0.025 0.05 "" -packing coloringFunction
