@@ -1,0 +1,58 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# kuipersJetClosePack <runDir>
+# tutorials/kuipersJet with -seedAtClosePack: the bed seeded at the
+# coloring function's close pack, 0.62, with 5 parcels per cell, so that
+# one parcel is 0.124 of a cell and a full cell is at close pack (the
+# tutorial's 0.6 seeding makes a full cell 5 x 0.12 = 0.600, and the gas of
+# such a cell needs 0.225 m/s to carry it, where the annulus gets about
+# 0.2), 0.2 s (about 2 minutes). Checks, every step (packing monitor):
+#   - 48 rows x 76 x 2 cells x 5 = 36 480 parcels and the cloud mass
+#     0.62*0.57*0.48*0.015*2660 = 6.76832 kg;
+#   - one parcel 0.62/5 = 0.124 of a cell;
+#   - the largest cell solids fraction is exactly close pack, 0.62 (1e-9),
+#     at every step: a cell takes its fifth parcel and refuses a sixth
+#     (0.744 > 0.62 + 0.5 x 0.124, the overfill), where the tutorial's full
+#     cell stays at 0.600;
+#   - the bed pressure drop over 0.1-0.2 s within 15 % of the bed weight
+#     per area, 6.76832*9.81/(0.57*0.015) = 7765.8 Pa;
+#   - the gas budget's minimum fluidization of a full cell, now at 0.62,
+#     equals Ergun's quadratic at e = 0.38 (the same Archimedes number
+#     12080.8 as at 0.4): 1.75/e^3 Re^2 + 150(1-e)/e^3 Re = 12080.8 gives
+#     Re 6.36547, so U_mf = 0.22493*6.36547/7.49771 = 0.19096 m/s (1e-3).
+#------------------------------------------------------------------------------
+runDir="${1:?usage: kuipersJetClosePack.sh <runDir>}"
+. "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
+
+copyTutorial kuipersJet "$runDir/case"
+runAllrun "$runDir/case" 0.2 -seedAtClosePack || exit 1
+
+cd "$runDir/case" || exit 1
+/usr/bin/python3 kuipersJetResults.py --from 0.1
+/usr/bin/python3 - <<'PY'
+import sys
+sys.path.insert(0, ".")
+import kuipersJetResults as k
+import kuipersJetGasBudget as gb
+import checks
+from checks import report as check
+res = k.summary(".", 0.1)
+mon = res["monitor"]
+check(all(r[1] == 36480 for r in mon), "36480 parcels at every step")
+mass = 0.62*0.57*0.48*0.015*2660
+check(all(abs(r[2]/mass - 1) < 1e-9 for r in mon),
+      "cloud mass %.6g kg = %.6g kg at every step" % (mon[-1][2], mass))
+check(abs(res["parcelFraction"] - 0.124) < 1e-3,
+      "one parcel = %.4f of a cell" % res["parcelFraction"])
+largest = [r[4] for r in mon]
+check(all(abs(a - 0.62) < 1e-9 for a in largest),
+      "largest cell solids fraction 0.62 at every step (%.10f to %.10f)"
+      % (min(largest), max(largest)))
+check(abs(res["dpRatio"] - 1) <= 0.15,
+      "mean deltaP over 0.1-0.2 s %.3f x bed weight within 15 %%"
+      % res["dpRatio"])
+check(abs(gb.minimum_fluidization(0.62)/0.19096 - 1) < 1e-3,
+      "minimum fluidization of a full cell at 0.62: %.5f m/s = Ergun's 0.19096"
+      % gb.minimum_fluidization(0.62))
+sys.exit(checks.status())
+PY
