@@ -12,7 +12,8 @@
 #     (the field is cell-based: one parcel is 0.12 of a cell);
 #   - the bed pressure drop over 0.1-0.2 s, after the start-up jump of the
 #     packed bed, lies within 15 % of the bed weight per area,
-#     6.8229*9.81/(0.57*0.015) = 7828 Pa (measured 0.929 x with push-through
+#     6.8229*9.81/(0.57*0.015) = 7828 Pa (measured 0.926 x with the set-up
+#     of 2026-11-28 evening, 0.929 x with push-through
 #     and the drag balance, 2026-11-28; 1.038 x without, 2026-11-27);
 #   - the field packingForce (packingMonitor writePackingForce, means over
 #     the written intervals 0.08-0.12-0.16-0.2 s) summed over the cells
@@ -32,6 +33,9 @@
 #     cells at 0.9 m (above the bed, whose gas volume below stays put) at
 #     0.2 s is the inflow over the cross-section, (0.25*0.555 + 10*0.015)
 #     /0.57 = 0.50658 m/s (1e-4).
+#   - the log's capacity report at the first step: a full cell holds 5
+#     parcels, 0.6 of the cell (5 x 0.12), and the warning that this is
+#     below close pack 0.62 (tests/regression/kuipersJetClosePack.sh).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: kuipersJet.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -101,3 +105,20 @@ check(top.sum() == 152 and abs(u_s[top].mean()/0.50658 - 1) < 1e-4,
       % (u_s[top].mean(), top.sum()))
 sys.exit(checks.status())
 PY
+status=$?
+# the capacity report at the first step (CapacityLimit::reportFullCell):
+# 5 parcels of 0.12 make a full cell, 0.02 below close pack: warned
+log=log.mppicPimpleFoam
+if grep -q "capacity: a full cell holds 5 parcels, 0.6 of the cell" $log
+then
+    echo "PASS the log reports a full cell of 5 parcels, 0.6 of the cell"
+else
+    echo "FAIL no report of a full cell of 5 parcels, 0.6 of the cell"; status=1
+fi
+if grep -q "below close pack 0.62" $log
+then
+    echo "PASS warned: the full cell is below close pack"
+else
+    echo "FAIL no warning of the full cell below close pack"; status=1
+fi
+exit $status

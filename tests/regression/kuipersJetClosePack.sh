@@ -20,6 +20,9 @@
 #     equals Ergun's quadratic at e = 0.38 (the same Archimedes number
 #     12080.8 as at 0.4): 1.75/e^3 Re^2 + 150(1-e)/e^3 Re = 12080.8 gives
 #     Re 6.36547, so U_mf = 0.22493*6.36547/7.49771 = 0.19096 m/s (1e-3).
+#   - the log's capacity report at the first step: a full cell holds 5
+#     parcels, 0.62 of the cell, and no warning of a full cell below close
+#     pack (which the tutorial's seeding gets).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: kuipersJetClosePack.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -56,3 +59,20 @@ check(abs(gb.minimum_fluidization(0.62)/0.19096 - 1) < 1e-3,
       % gb.minimum_fluidization(0.62))
 sys.exit(checks.status())
 PY
+status=$?
+# the capacity report at the first step (CapacityLimit::reportFullCell):
+# 5 parcels of 0.124 make a full cell at close pack: no warning
+log=log.mppicPimpleFoam
+if grep -q "capacity: a full cell holds 5 parcels, 0.62 of the cell" $log
+then
+    echo "PASS the log reports a full cell of 5 parcels, 0.62 of the cell"
+else
+    echo "FAIL no report of a full cell of 5 parcels, 0.62 of the cell"; status=1
+fi
+if ! grep -q "below close pack 0.62" $log
+then
+    echo "PASS no warning of a full cell below close pack"
+else
+    echo "FAIL warned of a full cell below close pack although it is at close pack"; status=1
+fi
+exit $status

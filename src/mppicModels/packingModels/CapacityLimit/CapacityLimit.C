@@ -117,6 +117,67 @@ void Foam::CapacityLimit<CloudType>::warnOfCutsAcrossGravity
 
 
 template<class CloudType>
+void Foam::CapacityLimit<CloudType>::reportFullCell
+(
+    const CloudType& cloud,
+    const scalar closePackFraction,
+    const scalar overfill
+)
+{
+    const fvMesh& mesh = cloud.mesh();
+
+    boolList occupied(mesh.nCells(), false);
+    scalar parcelVolume = 0;
+    label nParcels = 0;
+    for (const parcelType& p : cloud)
+    {
+        parcelVolume += p.nParticle()*p.volume();
+        ++nParcels;
+        occupied[p.cell()] = true;
+    }
+    scalar cellVolume = 0;
+    label nCells = 0;
+    forAll(occupied, celli)
+    {
+        if (occupied[celli])
+        {
+            cellVolume += mesh.V()[celli];
+            ++nCells;
+        }
+    }
+    reduce(parcelVolume, sumOp<scalar>());
+    reduce(nParcels, sumOp<label>());
+    reduce(cellVolume, sumOp<scalar>());
+    reduce(nCells, sumOp<label>());
+    if (nParcels == 0)
+    {
+        return;
+    }
+
+    // The most parcels that fit (cellRoom::fits, one after another)
+    const scalar v = parcelVolume/nParcels;
+    const scalar V = cellVolume/nCells;
+    const label n = floor(closePackFraction*V/v + overfill + 1e-9);
+    const scalar full = n*v/V;
+
+    Info<< "    capacity: a full cell holds " << n << " parcels, "
+        << full << " of the cell (close pack " << closePackFraction
+        << "; one parcel " << v/V << " of the cell)" << endl;
+
+    if (full < closePackFraction - 0.01)
+    {
+        WarningInFunction
+            << "A full cell holds " << n << " parcels, " << full
+            << " of the cell, below close pack " << closePackFraction
+            << ": its gas needs more than a packed bed's minimum"
+            << " fluidization. Seed so that a whole number of parcels"
+            << " makes close pack (kuipersJet README, \"A full cell at"
+            << " close pack\")" << endl;
+    }
+}
+
+
+template<class CloudType>
 Foam::boolList Foam::CapacityLimit<CloudType>::fullCells
 (
     const CloudType& cloud,
@@ -185,6 +246,12 @@ void Foam::CapacityLimit<CloudType>::startStep
 {
     entries_.update(cloud, closePackFraction, overfill_, deltaT);
     deltaT_ = deltaT;
+
+    if (!fullCellReported_)
+    {
+        reportFullCell(cloud, closePackFraction, overfill_);
+        fullCellReported_ = true;
+    }
 
     if (entries_.pushThrough())
     {
