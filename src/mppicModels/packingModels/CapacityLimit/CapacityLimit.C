@@ -154,10 +154,14 @@ void Foam::CapacityLimit<CloudType>::reportFullCell
         return;
     }
 
-    // The most parcels that fit (cellRoom::fits, one after another)
+    // As many parcels as fit, one after another
     const scalar v = parcelVolume/nParcels;
     const scalar V = cellVolume/nCells;
-    const label n = floor(closePackFraction*V/v + overfill + 1e-9);
+    label n = 0;
+    while (cellRoom::fits(v, closePackFraction*V - n*v, overfill))
+    {
+        ++n;
+    }
     const scalar full = n*v/V;
 
     Info<< "    capacity: a full cell holds " << n << " parcels, "
