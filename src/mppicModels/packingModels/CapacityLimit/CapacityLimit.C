@@ -264,9 +264,17 @@ void Foam::CapacityLimit<CloudType>::startStep
             warnOfCutsAcrossGravity(cloud.mesh(), cloud.g().value());
             cutsChecked_ = true;
         }
+        FixedList<label, 6> toward(entries_.nPushedToward());
+        forAll(toward, i)
+        {
+            reduce(toward[i], sumOp<label>());
+        }
         Info<< "    pushThrough: "
             << returnReduce(entries_.nPushed(), sumOp<label>())
-            << " refused entrants admitted" << endl;
+            << " refused entrants admitted (rooms toward -x " << toward[0]
+            << " +x " << toward[1] << " -y " << toward[2] << " +y "
+            << toward[3] << " -z " << toward[4] << " +z " << toward[5]
+            << ")" << endl;
     }
 
     if (!holdSupportedPacks_)

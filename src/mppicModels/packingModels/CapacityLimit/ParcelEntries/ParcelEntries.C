@@ -237,6 +237,7 @@ void Foam::ParcelEntries<CloudType>::update
     );
 
     nPushed_ = 0;
+    nPushedToward_ = label(0);
     if (pushThrough_)
     {
         nPushed_ = pushRefusedOn

@@ -20,11 +20,18 @@ Description
     The chain: a breadth-first search from the refusing cell through face
     neighbours (not back into the cell the entrant came from), through
     cells that have a parcel that stayed in them (internal faces only: in
-    parallel a chain stays on its processor), to the first cell with
+    parallel a chain stays on its processor), to the nearest cells with
     room for the entrant's volume (cellRoom::fits: exact for parcels of one
-    size, the pushed parcel may be larger); at most maxChainCells cells are
-    visited. The entrant's volume goes to the nearest room, whichever way,
-    as an incompressible emulsion's would. Each cell of the chain pushes
+    size, the pushed parcel may be larger), nearest by the number of faces
+    crossed; at most maxChainCells cells are visited. The entrant's volume
+    goes to the nearest room, whichever way, as an incompressible
+    emulsion's would. Of several equally near, the entrant's pushOrderKey
+    (a hash of its identity and the step) picks one, and the refusing
+    cells are served in the order of that key, not in the mesh's: the
+    mesh's numbering preferred no direction before only by chance (the
+    lowest-numbered first sent the Kuipers jet's pushes toward its left
+    wall: docs/VALIDATION.md, issue 21, twenty-fourth pass); a continued
+    or re-ordered run chooses the same. Each cell of the chain pushes
     the parcel that stayed in it and lies furthest toward the next cell
     (level parcels, within 1e-9 of the distance between the cells, by
     their lower (origProc, origId)).
@@ -37,6 +44,10 @@ Description
     give the serial answer (docs/VALIDATION.md, issue 21, eighteenth pass).
 
 \*---------------------------------------------------------------------------*/
+
+#include "pushOrderKey.H"
+#include <algorithm>
+#include <vector>
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
@@ -83,15 +94,46 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
         );
     };
 
+    // The refusing cells in an order the mesh's numbering does not set
+    // (in the cells' order the lowest-numbered took the rooms first: on
+    // the Kuipers mesh, numbered column by column from the left wall, the
+    // left side's), by their first refused entrant's pushOrderKey
+    auto refused = [&](const entrant& candidate)
+    {
+        return
+            !entries_[candidate.parcel].admitted
+         && (candidate.from >= 0 || candidate.remote >= 0);
+    };
+    const label timeIndex = mesh.time().timeIndex();
+    std::vector<std::pair<std::uint64_t, label>> order;
     forAll(entrants, celli)
     {
+        for (const entrant& candidate : entrants[celli])
+        {
+            if (refused(candidate))
+            {
+                const parcelType& p = *candidate.parcel;
+                order.emplace_back
+                (
+                    pushOrderKey(p.origProc(), p.origId(), timeIndex),
+                    celli
+                );
+                break;
+            }
+        }
+    }
+    std::sort(order.begin(), order.end());
+
+    for (const auto& keyCell : order)
+    {
+        const label celli = keyCell.second;
         for (const entrant& candidate : entrants[celli])
         {
             entry& e = entries_[candidate.parcel];
             // (An entrant from another processor has been counted back in
             // its cell there (returnRefused): admitted here, that cell
             // counts one parcel too many this step, never too few)
-            if (e.admitted || (candidate.from < 0 && candidate.remote < 0))
+            if (!refused(candidate))
             {
                 continue;
             }
@@ -106,52 +148,82 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
             label target = -1;
             if (pushed[celli] < stayers[celli].size())
             {
+                // Level by level (a level: the cells as many faces away),
+                // so that every cell with room in the nearest level is seen
                 DynamicList<label> front;
+                DynamicList<label> rooms;
                 parent[celli] = -1;
                 visited.append(celli);
                 front.append(celli);
-                for (label i = 0; i < front.size() && target < 0; ++i)
+                label levelStart = 0;
+                while (levelStart < front.size() && rooms.empty())
                 {
-                    const label c = front[i];
-                    for (const label facei : mesh.cells()[c])
+                    const label levelEnd = front.size();
+                    for (label i = levelStart; i < levelEnd; ++i)
                     {
-                        if (!mesh.isInternalFace(facei))
+                        const label c = front[i];
+                        for (const label facei : mesh.cells()[c])
                         {
-                            continue;
-                        }
-                        const label n =
-                            mesh.faceOwner()[facei] == c
-                          ? mesh.faceNeighbour()[facei]
-                          : mesh.faceOwner()[facei];
-                        if (parent[n] != -2 || n == candidate.from)
-                        {
-                            continue;
-                        }
+                            if (!mesh.isInternalFace(facei))
+                            {
+                                continue;
+                            }
+                            const label n =
+                                mesh.faceOwner()[facei] == c
+                              ? mesh.faceNeighbour()[facei]
+                              : mesh.faceOwner()[facei];
+                            if (parent[n] != -2 || n == candidate.from)
+                            {
+                                continue;
+                            }
 
-                        if (hasRoom(n, candidate.volume))
-                        {
-                            parent[n] = c;
-                            visited.append(n);
-                            target = n;
-                            break;
-                        }
-                        if
-                        (
-                            pushed[n] < stayers[n].size()
-                         && visited.size() < maxChainCells
-                        )
-                        {
-                            parent[n] = c;
-                            visited.append(n);
-                            front.append(n);
+                            if (hasRoom(n, candidate.volume))
+                            {
+                                parent[n] = c;
+                                visited.append(n);
+                                rooms.append(n);
+                            }
+                            else if
+                            (
+                                rooms.empty()
+                             && pushed[n] < stayers[n].size()
+                             && visited.size() < maxChainCells
+                            )
+                            {
+                                parent[n] = c;
+                                visited.append(n);
+                                front.append(n);
+                            }
                         }
                     }
+                    levelStart = levelEnd;
+                }
+
+                // Of the nearest cells with room, the one the entrant's
+                // pushOrderKey picks, not the first found (the
+                // lowest-numbered neighbour first: on the Kuipers mesh
+                // every tie went to -x)
+                if (rooms.size())
+                {
+                    const parcelType& p = *candidate.parcel;
+                    target = rooms
+                    [
+                        pushOrderKey(p.origProc(), p.origId(), timeIndex)
+                      % static_cast<std::uint64_t>(rooms.size())
+                    ];
                 }
             }
             if (target < 0)
             {
                 continue;
             }
+            const vector toRoom(C[target] - C[celli]);
+            direction axis = 0;
+            for (direction i = 1; i < vector::nComponents; ++i)
+            {
+                axis = mag(toRoom[i]) > mag(toRoom[axis]) ? i : axis;
+            }
+            ++nPushedToward_[2*axis + (toRoom[axis] > 0)];
 
             // Down the chain from the target: each cell pushes one of its
             // stayers, the one furthest toward the next cell, into it
