@@ -33,7 +33,7 @@ Foam::coloringFunctionRules::coloringFunctionRules(const dictionary& coeffs)
     ),
     case1a_(coeffs.lookupOrDefault<bool>("case1a", true)),
     case1b_(coeffs.lookupOrDefault<bool>("case1b", true)),
-    packAtClosePack_(coeffs.lookupOrDefault<bool>("packAtClosePack", true)),
+    closePackTest_(readClosePackTest(coeffs)),
     reflection_(readReflection(coeffs))
 {}
 
@@ -61,6 +61,20 @@ Foam::coloringFunctionRules::readReflection(const dictionary& coeffs)
             << "(normal vector component)" << exit(FatalIOError);
     }
     return reflectionType::component;
+}
+
+
+Foam::coloringFunctionRules::closePackTest
+Foam::coloringFunctionRules::readClosePackTest(const dictionary& coeffs)
+{
+    if (!coeffs.found("packAtClosePack"))
+    {
+        return closePackTest::exact;
+    }
+    return
+        coeffs.get<bool>("packAtClosePack")
+      ? closePackTest::atPack
+      : closePackTest::abovePack;
 }
 
 
