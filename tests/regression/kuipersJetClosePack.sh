@@ -28,11 +28,11 @@
 #   - pushThrough prefers no direction the mesh's numbering gives: the bed
 #     and its mesh are mirror-symmetric in x and in z, so over the run the
 #     refused entrants pushed on toward -x and +x are as many within 2 %
-#     of their sum, and those toward -z and +z within 5 % (fewer: about
-#     10 000). Measured when written, with the rule before (the first
-#     cell with room found, the lowest-numbered): -x 27 509, +x 25 560
-#     (3.7 %), -z 6 795, +z 4 103 (25 %); with pushOrderKey's choice:
-#     see the log.
+#     of their sum, and those toward -z and +z within 5 % (fewer: a fifth
+#     of the x pushes). Measured when written, with the choice before (the
+#     first cell with room found, the lowest-numbered): -x 55 297, +x
+#     44 466 (10.9 %), -z 10 916, +z 9 691 (5.9 %); with pushOrderKey's
+#     choice: -x 72 046, +x 71 576 (0.3 %), -z 13 324, +z 13 959 (2.3 %).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: kuipersJetClosePack.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
