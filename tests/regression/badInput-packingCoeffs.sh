@@ -5,6 +5,7 @@
 # naming it, 0.2 and [0, 0.1]; coloringFunction and mfixSnider with overfill 1.5 ->
 # FatalIOError naming overfill, 1.5 and [0, 1]; coloringFunction with
 # pushThrough sometimes -> FatalIOError naming pushThrough and sometimes;
+# coloringFunction with packAtClosePack sometimes -> the same for it;
 # coloringFunction and mfixSnider with followDrainingPacks true but
 # holdSupportedPacks false -> FatalIOError naming followDrainingPacks, true
 # and holdSupportedPacks (the drain acts on held packs only); both models
@@ -67,6 +68,10 @@ setEntry "$runDir/case" constant/kinematicCloudProperties \
     subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; pushThrough sometimes; }"
 runBroken "$runDir/case" mppicPimpleFoam
 check fatal "$runDir/case/log.broken" $rc "pushThrough" "sometimes" || status=1
+setEntry "$runDir/case" constant/kinematicCloudProperties \
+    subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; packAtClosePack sometimes; }"
+runBroken "$runDir/case" mppicPimpleFoam
+check fatal "$runDir/case/log.broken" $rc "packAtClosePack" "sometimes" || status=1
 setEntry "$runDir/case" constant/kinematicCloudProperties \
     subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; conserveMomentum true; freePackReactionsToGas sometimes; }"
 runBroken "$runDir/case" mppicPimpleFoam
