@@ -11,11 +11,12 @@ Description
     coloringFunctionRules, alpha_cp = 0.6, e1 = 0.5, e2 = 0.9,
     g = (0 -9.81 0); U intermediate velocity, us mean solids velocity,
     dV impulse direction -grad(chi):
-      eq 18: chi(0.59) = 0, chi(0.6) = 0.6, chi(0.65) = 0.65, and as
-          computed chi(0.6/(1 + 1e-10)) = 0; packAtClosePack true (at close
-          pack to 1e-9): chi(0.6/(1 + 1e-10)) = 0.6/(1 + 1e-10),
-          chi(0.6*(1 - 1e-8)) = 0; packAtClosePack false: chi(0.6) = 0,
-          chi(0.6*(1 + 1e-10)) = 0, chi(0.6*(1 + 1e-8)) = 0.6*(1 + 1e-8)
+      eq 18: chi(0.59) = 0, chi(0.6) = 0.6, chi(0.65) = 0.65; by default
+          (packAtClosePack true, at close pack to 1e-9):
+          chi(0.6/(1 + 1e-10)) = 0.6/(1 + 1e-10), chi(0.6*(1 - 1e-8)) = 0,
+          and the same with packAtClosePack true written out;
+          packAtClosePack false: chi(0.6) = 0, chi(0.6*(1 + 1e-10)) = 0,
+          chi(0.6*(1 + 1e-8)) = 0.6*(1 + 1e-8)
       approach, eq 20: dV = (1 0 0), U = (-2 0.3 0), us = (0.5 0 0):
           Urel = (-2.5 0.3 0), U' = us - 0.5*Urel = (1.75 -0.15 0)
       separation: U = (2 0 0), same us, dV: unchanged
@@ -151,27 +152,26 @@ void testColoringFunction()
     checkClose("chi(0.59)", rules.colour(0.59), 0, 0, 1);
     checkClose("chi(0.6)", rules.colour(0.6), 0.6);
     checkClose("chi(0.65)", rules.colour(0.65), 0.65);
-    // close pack as computed (no packAtClosePack, MFiX's test): 5
-    // parcels of 0.12 in a cell 1e-10 larger than theirs (gmsh's points)
-    // make 0.6/(1 + 1e-10), no pack; packAtClosePack true: a pack, and
-    // 1e-8 below close pack is not; false: only above by more than 1e-9
-    checkClose
-    (
-        "as computed: chi(0.6/(1 + 1e-10))", rules.colour(0.6/(1 + 1e-10)),
-        0, 0, 1
-    );
+    // a full cell at close pack: 5 parcels of 0.12 in a cell 1e-10 larger
+    // than theirs (gmsh's points) make 0.6/(1 + 1e-10), a pack by default
+    // (as computed it was not); 1e-8 below close pack is not; false: only
+    // above it by more than 1e-9
     dictionary atPackCoeffs(colouringCoeffs());
     atPackCoeffs.add("packAtClosePack", true);
     const coloringFunctionRules atPack(atPackCoeffs);
-    checkClose
-    (
-        "at pack: chi(0.6/(1 + 1e-10))", atPack.colour(0.6/(1 + 1e-10)),
-        0.6/(1 + 1e-10)
-    );
-    checkClose
-    (
-        "at pack: chi(0.6*(1 - 1e-8))", atPack.colour(0.6*(1 - 1e-8)), 0, 0, 1
-    );
+    for (const coloringFunctionRules* r : {&rules, &atPack})
+    {
+        const string form(r == &rules ? "default" : "true");
+        checkClose
+        (
+            form + ": chi(0.6/(1 + 1e-10))", r->colour(0.6/(1 + 1e-10)),
+            0.6/(1 + 1e-10)
+        );
+        checkClose
+        (
+            form + ": chi(0.6*(1 - 1e-8))", r->colour(0.6*(1 - 1e-8)), 0, 0, 1
+        );
+    }
     dictionary abovePackCoeffs(colouringCoeffs());
     abovePackCoeffs.add("packAtClosePack", false);
     const coloringFunctionRules abovePack(abovePackCoeffs);

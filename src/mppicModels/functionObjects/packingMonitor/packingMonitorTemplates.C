@@ -133,7 +133,7 @@ Foam::functionObjects::packingMonitor::evaluate(const CloudType& cloud) const
     forAll(alphaCell, celli)
     {
         s.maxAlphaCell = max(s.maxAlphaCell, alphaCell[celli]);
-        if (alphaCell[celli] > closePackFraction_)
+        if (alphaCell[celli] > (1 + 1e-9)*closePackFraction_)
         {
             ++s.nCellsAboveClosePack;
         }

@@ -33,7 +33,7 @@ Foam::coloringFunctionRules::coloringFunctionRules(const dictionary& coeffs)
     ),
     case1a_(coeffs.lookupOrDefault<bool>("case1a", true)),
     case1b_(coeffs.lookupOrDefault<bool>("case1b", true)),
-    closePackTest_(readClosePackTest(coeffs)),
+    packAtClosePack_(coeffs.lookupOrDefault<bool>("packAtClosePack", true)),
     reflection_(readReflection(coeffs))
 {}
 
@@ -63,19 +63,6 @@ Foam::coloringFunctionRules::readReflection(const dictionary& coeffs)
     return reflectionType::component;
 }
 
-
-Foam::coloringFunctionRules::closePackTest
-Foam::coloringFunctionRules::readClosePackTest(const dictionary& coeffs)
-{
-    if (!coeffs.found("packAtClosePack"))
-    {
-        return closePackTest::exact;
-    }
-    return
-        coeffs.get<bool>("packAtClosePack")
-      ? closePackTest::atPack
-      : closePackTest::abovePack;
-}
 
 
 Foam::scalar Foam::coloringFunctionRules::componentVelocity
