@@ -18,7 +18,10 @@
 #     (measured 0.004);
 #   - 2880 parcels and the cloud mass 0.18 kg at every step; the largest
 #     cell solids fraction at most max(1.05*0.6, 0.6 + one parcel 0.2) = 0.8
-#     (measured 0.600).
+#     (measured 0.600), and the packing monitor's count of cells above
+#     close pack 0 at every step: its full cells hold 3 x 0.2 = 0.6 to
+#     round-off, which is not above it (counted as computed, all 960 full
+#     cells were, from the first step).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: uniformFluidizationPacksToGas.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -53,5 +56,8 @@ bound = max(1.05*0.6, 0.6 + 0.6/3)
 check(max(r[4] for r in mon) <= bound + 1e-12,
       "max cell solids fraction %.4f <= %.4f at every step"
       % (max(r[4] for r in mon), bound))
+check(all(r[5] == 0 for r in mon),
+      "no cell above close pack by more than round-off at any step "
+      "(largest count %d)" % max(r[5] for r in mon))
 sys.exit(checks.status())
 PY
