@@ -64,7 +64,6 @@ Foam::coloringFunctionRules::readReflection(const dictionary& coeffs)
 }
 
 
-
 Foam::scalar Foam::coloringFunctionRules::componentVelocity
 (
     const scalar v,
