@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "packingMonitor.H"
+#include "cellRoom.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -133,7 +134,7 @@ Foam::functionObjects::packingMonitor::evaluate(const CloudType& cloud) const
     forAll(alphaCell, celli)
     {
         s.maxAlphaCell = max(s.maxAlphaCell, alphaCell[celli]);
-        if (alphaCell[celli] > (1 + 1e-9)*closePackFraction_)
+        if (alphaCell[celli] > (1 + cellRoom::roundOff)*closePackFraction_)
         {
             ++s.nCellsAboveClosePack;
         }

@@ -27,7 +27,7 @@ void Foam::ParcelEntries<CloudType>::reportGrowth
 
     auto grew = [&](const label celli)
     {
-        const scalar tolerance = 1e-9*closePackFraction;
+        const scalar tolerance = cellRoom::roundOff*closePackFraction;
         return
             endFraction[celli] > closePackFraction + tolerance
          && endFraction[celli] > startFraction_[celli] + tolerance;
