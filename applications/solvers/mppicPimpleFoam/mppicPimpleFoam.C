@@ -57,6 +57,11 @@ Description
     solved: U.<gas> and phi.<gas> follow the analytic field, at mid-step
     while the parcels move (see createPrescribedGasFlow.H).
 
+    With constant/gasMassSources (libmppicModels' gasMassSources, MFiX's
+    point sources) gas is added inside the domain: a volumetric flow spread
+    over the cells within a sphere, in the continuity (the pressure
+    equation's right-hand side) and, with its own velocity, in the momentum.
+
 Usage
     mppicPimpleFoam [-cloud <name>] [-parallel]
 
@@ -124,6 +129,7 @@ Usage
 #include "prescribedGasFlow.H"
 #include "reconstructFlux.H"
 #include "implicitDragBalance.H"
+#include "gasMassSources.H"
 #include "newCloudOrExit.H"
 #include "cloudInputChecks.H"
 
