@@ -4,8 +4,9 @@ issue 22): where the aeration gas goes and what solids it moves.
 
 Usage:
     cfbAeration.py RUN [RUN ...] [--standpipe SLPM] [--plot FILE]
-    RUN = SLPM:DIR:T0:T1, e.g. 12:../runs/f12:2.3:3 (the bend aeration
-          FTC135 of the run, its directory, the window in simulated s)
+    RUN = SLPM:DIR:T0:T1[:LABEL], e.g. 12:../runs/f12:2.3:3 (the bend
+          aeration FTC135 of the run, its directory, the window in
+          simulated s; runs of one LABEL are one line of the plot)
 
 For each run, over the window:
   - the gas up the standpipe and along the leg into the riser, m3/s, from
@@ -62,12 +63,12 @@ def gas_split(case, t0, t1):
 
 
 def measure(spec, standpipeSlpm):
-    slpm, case, t0, t1 = spec.split(":")
+    slpm, case, t0, t1, label = (spec.split(":") + ["runs"])[:5]
     t0, t1 = float(t0), float(t1)
     r = cfbResults.summary(case, t0, t1)
     up, along, n = gas_split(case, t0, t1)
     q = (float(slpm) + standpipeSlpm)*1e-3/60
-    return {"slpm": float(slpm), "case": case, "t0": t0, "t1": t1,
+    return {"slpm": float(slpm), "case": case, "label": label, "t0": t0, "t1": t1,
             "up": up, "along": along, "nFields": n, "aeration": q,
             "fed": r["circulationStandpipe"], "riserDp": r["riserDp"],
             "standpipeDp": r["standpipeDp"], "level": r["heightAboveBend"]}
@@ -78,16 +79,23 @@ def plot(rows, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     rows = sorted(rows, key=lambda r: r["slpm"])
-    x = [r["slpm"] for r in rows]
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(9, 3.6))
-    a1.plot(x, [1e3*r["fed"] for r in rows], "o-")
+    labels = list(dict.fromkeys(r["label"] for r in rows))
+    for label, marker in zip(labels, "osdv^"):
+        own = [r for r in rows if r["label"] == label]
+        a1.plot([r["slpm"] for r in own], [1e3*r["fed"] for r in own],
+                marker + "-", label=label)
+    a1.legend(fontsize=8)
     a1.set_xlabel("bend aeration FTC135 [SLPM]")
     a1.set_ylabel("solids down the standpipe [g/s]")
     a1.set_xlim(left=0)
     a1.set_ylim(bottom=0)
-    a2.plot(x, [1e6*r["up"] for r in rows], "o-", label="up the standpipe")
-    a2.plot(x, [1e6*r["along"] for r in rows], "s-", label="along the leg")
-    a2.plot(x, [1e6*r["aeration"] for r in rows], "k--", label="both aerations")
+    own = [r for r in rows if r["label"] == labels[0]]
+    x = [r["slpm"] for r in own]
+    a2.plot(x, [1e6*r["up"] for r in own], "o-", label="up the standpipe")
+    a2.plot(x, [1e6*r["along"] for r in own], "s-", label="along the leg")
+    a2.plot(x, [1e6*r["aeration"] for r in own], "k--", label="both aerations")
+    a2.set_title(labels[0], fontsize=9)
     a2.set_xlabel("bend aeration FTC135 [SLPM]")
     a2.set_ylabel("gas [cm$^3$/s]")
     a2.set_xlim(left=0)
@@ -103,12 +111,12 @@ def main():
     p.add_argument("--plot")
     a = p.parse_args()
     rows = [measure(s, a.standpipe) for s in a.runs]
-    print("| FTC135 [SLPM] | window [s] | solids fed [g/s] | gas up the standpipe [cm3/s]"
+    print("| run | FTC135 [SLPM] | window [s] | solids fed [g/s] | gas up the standpipe [cm3/s]"
           " | gas along the leg [cm3/s] | riser dP [Pa] | standpipe dP [Pa] | level above the bend [m] |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|")
     for r in sorted(rows, key=lambda r: r["slpm"]):
-        print("| %g | %g-%g | %.1f | %.0f (%.0f %% of the aerations) | %.0f | %.0f | %.0f | %.3f |"
-              % (r["slpm"], r["t0"], r["t1"], 1e3*r["fed"], 1e6*r["up"],
+        print("| %s | %g | %g-%g | %.1f | %.0f (%.0f %% of the aerations) | %.0f | %.0f | %.0f | %.3f |"
+              % (r["label"], r["slpm"], r["t0"], r["t1"], 1e3*r["fed"], 1e6*r["up"],
                  100*r["up"]/r["aeration"] if r["aeration"] else math.nan,
                  1e6*r["along"], r["riserDp"], r["standpipeDp"], r["level"]))
     if a.plot:
