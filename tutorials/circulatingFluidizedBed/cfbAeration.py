@@ -20,7 +20,8 @@ For each run, over the window:
 The aerations of the run are given, not read (a run forked from another
 with new flows does not record them): FTC135 in RUN, the standpipe's FTC115
 by --standpipe (default 1.5 SLPM, Cases 1 and 3); the shares are of the two.
---plot draws the fed solids and the gas shares against FTC135.
+--plot draws the fed solids against FTC135 (a line per label) and the gas
+shares of the label with the most runs.
 """
 import argparse
 import math
@@ -90,12 +91,13 @@ def plot(rows, path):
     a1.set_ylabel("solids down the standpipe [g/s]")
     a1.set_xlim(left=0)
     a1.set_ylim(bottom=0)
-    own = [r for r in rows if r["label"] == labels[0]]
+    most = max(labels, key=lambda l: sum(r["label"] == l for r in rows))
+    own = [r for r in rows if r["label"] == most]
     x = [r["slpm"] for r in own]
     a2.plot(x, [1e6*r["up"] for r in own], "o-", label="up the standpipe")
     a2.plot(x, [1e6*r["along"] for r in own], "s-", label="along the leg")
     a2.plot(x, [1e6*r["aeration"] for r in own], "k--", label="both aerations")
-    a2.set_title(labels[0], fontsize=9)
+    a2.set_title(most, fontsize=9)
     a2.set_xlabel("bend aeration FTC135 [SLPM]")
     a2.set_ylabel("gas [cm$^3$/s]")
     a2.set_xlim(left=0)

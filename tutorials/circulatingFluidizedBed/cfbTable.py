@@ -17,7 +17,9 @@ window (slope of a straight-line fit). --out writes the table as Markdown;
 --plot draws riser and standpipe pressure drop and the level against time
 for all runs from --start (default 0.5 s, after the start-up transient),
 with the experiment's values as dashed lines and, with --switch T, a
-vertical line where runs started from another case's state.
+vertical line where runs started from another case's state (--switchText
+says what happened there). --labels "A;B" colours the lines by run, one
+label each, instead of by case.
 """
 import argparse
 import csv
@@ -87,7 +89,8 @@ def table(runs, ref):
     return "\n".join(lines + [""] + ["- " + n for n in notes]), results
 
 
-def plot(results, ref, path, start, switch):
+def plot(results, ref, path, start, switch, labels=None,
+         switchText="cases 2, 3 start from case 1 here"):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -96,24 +99,25 @@ def plot(results, ref, path, start, switch):
     keys = (("riserDpSeries", "riser_dp_exp", "riser ΔP [Pa]"),
             ("standpipeDpSeries", "standpipe_dp_exp", "standpipe ΔP [Pa]"),
             ("levelSeries", "height_exp", "level above the bend [m]"))
-    for case, _, r in results:
-        colour = "C%d" % (case - 1)
+    for i, (case, _, r) in enumerate(results):
+        colour = "C%d" % (i if labels else case - 1)
+        name = labels[i] if labels else "case %d" % case
         for ax, (series, refKey, label) in zip(axes, keys):
             s = r[series]
             shift = cfbResults.STANDPIPE_Y0 if series == "levelSeries" else 0
             s = [(t, v) for t, v in s if t >= start]
             step = max(1, len(s)//4000)
             ax.plot([t for t, v in s[::step]], [v - shift for t, v in s[::step]],
-                    color=colour, lw=0.6, label="case %d" % case)
-            ax.axhline(ref[case][refKey], color=colour, ls="--", lw=1)
+                    color=colour, lw=0.6, label=name)
+            ax.axhline(ref[case][refKey], color="k" if labels else colour,
+                       ls="--", lw=1)
             ax.set_ylabel(label)
     for ax in axes[:2]:
         ax.set_ylim(0, 2000)
     if switch is not None:
         for ax in axes:
             ax.axvline(switch, color="k", lw=0.8, ls=":")
-        axes[0].text(switch, 1900, " cases 2, 3 start from case 1 here",
-                     fontsize=8, va="top")
+        axes[0].text(switch, 1900, " " + switchText, fontsize=8, va="top")
     axes[0].legend(loc="lower left", fontsize=8)
     axes[-1].set_xlabel("time [s]")
     axes[0].set_title("NETL CFB, coarse mesh: ours (lines) against the experiment (dashed)")
@@ -131,6 +135,9 @@ def main(argv):
     p.add_argument("--out")
     p.add_argument("--start", type=float, default=0.5)
     p.add_argument("--switch", type=float)
+    p.add_argument("--switchText", default="cases 2, 3 start from case 1 here")
+    p.add_argument("--labels", help="separated by ;, one per RUN: the plot's"
+                   " lines by run instead of by case")
     a = p.parse_args(argv)
     ref = reference()
     text, results = table([parse(r) for r in a.runs], ref)
@@ -139,7 +146,8 @@ def main(argv):
         with open(a.out, "w") as f:
             f.write(text + "\n")
     if a.plot:
-        plot(results, ref, a.plot, a.start, a.switch)
+        labels = a.labels.split(";") if a.labels else None
+        plot(results, ref, a.plot, a.start, a.switch, labels, a.switchText)
         print("wrote " + a.plot)
 
 
