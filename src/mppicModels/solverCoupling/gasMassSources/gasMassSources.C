@@ -34,6 +34,19 @@ Foam::dictionary readSources(const Foam::fvMesh& mesh)
     return none;
 }
 
+//- A field of the sources, not read or written
+Foam::IOobject sourceField(const Foam::fvMesh& mesh, const Foam::word& name)
+{
+    return Foam::IOobject
+    (
+        name,
+        mesh.time().timeName(),
+        mesh,
+        Foam::IOobject::NO_READ,
+        Foam::IOobject::NO_WRITE
+    );
+}
+
 } // End anonymous namespace
 
 
@@ -89,7 +102,6 @@ void Foam::gasMassSources::addSource
         volumeRate_[celli] += rate;
         momentumRate_[celli] += rate*velocity;
     }
-    active_ = true;
 
     Info<< "    " << dict.dictName() << ": " << Q << " m3/s over "
         << nTotal << " cells, " << volume << " m3, within " << radius
@@ -108,31 +120,16 @@ Foam::gasMassSources::gasMassSources
 :
     volumeRate_
     (
-        IOobject
-        (
-            "gasMassSourceRate",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE
-        ),
+        sourceField(mesh, "gasMassSourceRate"),
         mesh,
         dimensionedScalar(dimless/dimTime, Zero)
     ),
     momentumRate_
     (
-        IOobject
-        (
-            "gasMassSourceMomentum",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE
-        ),
+        sourceField(mesh, "gasMassSourceMomentum"),
         mesh,
         dimensionedVector(dimVelocity/dimTime, Zero)
-    ),
-    active_(false)
+    )
 {
     const dictionary& sources = dict.subDict("sources");
 
@@ -169,12 +166,6 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::gasMassSources::momentumSource
 ) const
 {
     return momentumRate_ - fvm::Sp(volumeRate_, U);
-}
-
-
-Foam::scalar Foam::gasMassSources::totalVolumeRate() const
-{
-    return gSum(volumeRate_.primitiveField()*volumeRate_.mesh().V());
 }
 
 
