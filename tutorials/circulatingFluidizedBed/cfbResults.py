@@ -10,6 +10,10 @@ Reads the case's postProcessing tables and logs and prints, over the window
     probes riser005 and riser119 on the riser axis (p is kinematic);
   - standpipe pressure drop, Pa: rho_air*(p(0.0727, 0.16) - p(0.0727, 0.90)),
     probes standpipe016 and standpipe090 on the standpipe axis;
+  - the loop's pressure balance, standpipe = riser + top + bottom: the top
+    p(riser119) - p(standpipe090) (the riser's cap, the crossover, the
+    cyclone), the bottom p(standpipe016) - p(riser005) (the L-valve); these
+    four also as medians over the steps (for runs whose taps spike);
   - standpipe inventory height: the top of the region where the solids
     fraction on the standpipe axis (cell values every 4 mm, every 0.02 s),
     averaged over 2 cm, exceeds 0.3; given as the level y (above the riser
@@ -182,6 +186,12 @@ def rate(pairs, t0, t1):
     return (p[-1][1] - p[0][1])/(p[-1][0] - p[0][0])
 
 
+def window_median(pairs, t0, t1):
+    v = sorted(p for t, p in pairs if t0 - 1e-12 <= t <= t1 + 1e-12)
+    n = len(v)
+    return float("nan") if not n else 0.5*(v[(n - 1)//2] + v[n//2])
+
+
 def summary(case=".", t0=None, t1=None):
     rho = float(post.dict_entry(os.path.join(case, "constant", "transportProperties"),
                            "rho.air"))
@@ -202,6 +212,17 @@ def summary(case=".", t0=None, t1=None):
     res["riserDp"], _ = post.window_mean(riser, t0, t1)
     res["standpipeDp"], _ = post.window_mean(stand, t0, t1)
     res["riserDpSeries"], res["standpipeDpSeries"] = riser, stand
+    # The loop's balance: standpipe = riser + top + bottom, the top the riser's
+    # cap, crossover and cyclone (riser119 -> standpipe090), the bottom the
+    # L-valve (riser005 -> standpipe016, the bend's and leg's gain less loss)
+    top = [(r[0], rho*(r[1 + TAPS["riser119"]] - r[1 + TAPS["standpipe090"]]))
+           for r in probes]
+    bottom = [(r[0], rho*(r[1 + TAPS["standpipe016"]] - r[1 + TAPS["riser005"]]))
+              for r in probes]
+    res["loopTopDp"], _ = post.window_mean(top, t0, t1)
+    res["loopBottomDp"], _ = post.window_mean(bottom, t0, t1)
+    # medians too: the taps of a run with pressure spikes (mfixSnider)
+    res["tapMedians"] = [window_median(x, t0, t1) for x in (riser, stand, top, bottom)]
 
     inv = {}
     for zone in ("Riser", "Standpipe"):
@@ -308,6 +329,11 @@ def print_summary(r):
     print("window %.3g-%.3g s (run to %.4g s)" % (r["t0"], r["t1"], r["tEnd"]))
     print("  riser pressure drop (y 0.05-1.19 m)       %8.1f Pa" % r["riserDp"])
     print("  standpipe pressure drop (y 0.16-0.90 m)   %8.1f Pa" % r["standpipeDp"])
+    print("  loop balance: standpipe = riser + top (y 1.19 riser -> 0.90 standpipe:"
+          " %.1f Pa)\n                + bottom (y 0.05 riser -> 0.16 standpipe: %.1f Pa)"
+          % (r["loopTopDp"], r["loopBottomDp"]))
+    print("  medians over the steps: riser %.1f, standpipe %.1f, top %.1f, bottom %.1f Pa"
+          % tuple(r["tapMedians"]))
     print("  standpipe inventory level (axis, > 0.3)   %8.3f m  (%.3f m above the bend, "
           "%d profiles)" % (r["level"], r["heightAboveBend"], r["nLevels"]))
     print("  packed-equivalent height above the bend   %8.3f m" % r["packedHeight"])
