@@ -205,20 +205,19 @@ def summary(case=".", t0=None, t1=None):
         t0 = 0.5*t1
     res = {"t0": t0, "t1": t1, "tEnd": tEnd, "rhoGas": rho}
 
-    riser = [(r[0], rho*(r[1 + TAPS["riser005"]] - r[1 + TAPS["riser119"]]))
-             for r in probes]
-    stand = [(r[0], rho*(r[1 + TAPS["standpipe016"]] - r[1 + TAPS["standpipe090"]]))
-             for r in probes]
+    def drop(upstream, downstream):
+        """(time, Pa) of p(upstream tap) - p(downstream tap), every step."""
+        return [(r[0], rho*(r[1 + TAPS[upstream]] - r[1 + TAPS[downstream]]))
+                for r in probes]
+
+    riser, stand = drop("riser005", "riser119"), drop("standpipe016", "standpipe090")
     res["riserDp"], _ = post.window_mean(riser, t0, t1)
     res["standpipeDp"], _ = post.window_mean(stand, t0, t1)
     res["riserDpSeries"], res["standpipeDpSeries"] = riser, stand
     # The loop's balance: standpipe = riser + top + bottom, the top the riser's
     # cap, crossover and cyclone (riser119 -> standpipe090), the bottom the
     # L-valve (riser005 -> standpipe016, the bend's and leg's gain less loss)
-    top = [(r[0], rho*(r[1 + TAPS["riser119"]] - r[1 + TAPS["standpipe090"]]))
-           for r in probes]
-    bottom = [(r[0], rho*(r[1 + TAPS["standpipe016"]] - r[1 + TAPS["riser005"]]))
-              for r in probes]
+    top, bottom = drop("riser119", "standpipe090"), drop("standpipe016", "riser005")
     res["loopTopDp"], _ = post.window_mean(top, t0, t1)
     res["loopBottomDp"], _ = post.window_mean(bottom, t0, t1)
     # medians too: the taps of a run with pressure spikes (mfixSnider)
