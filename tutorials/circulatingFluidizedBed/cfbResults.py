@@ -186,12 +186,6 @@ def rate(pairs, t0, t1):
     return (p[-1][1] - p[0][1])/(p[-1][0] - p[0][0])
 
 
-def window_median(pairs, t0, t1):
-    v = sorted(p for t, p in pairs if t0 - 1e-12 <= t <= t1 + 1e-12)
-    n = len(v)
-    return float("nan") if not n else 0.5*(v[(n - 1)//2] + v[n//2])
-
-
 def summary(case=".", t0=None, t1=None):
     rho = float(post.dict_entry(os.path.join(case, "constant", "transportProperties"),
                            "rho.air"))
@@ -221,7 +215,8 @@ def summary(case=".", t0=None, t1=None):
     res["loopTopDp"], _ = post.window_mean(top, t0, t1)
     res["loopBottomDp"], _ = post.window_mean(bottom, t0, t1)
     # medians too: the taps of a run with pressure spikes (mfixSnider)
-    res["tapMedians"] = [window_median(x, t0, t1) for x in (riser, stand, top, bottom)]
+    res["tapMedians"] = [post.percentile([v for t, v in x if t0 - 1e-12 <= t <= t1 + 1e-12], 50)
+                         for x in (riser, stand, top, bottom)]
 
     inv = {}
     for zone in ("Riser", "Standpipe"):
