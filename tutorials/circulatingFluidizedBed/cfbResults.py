@@ -186,6 +186,23 @@ def rate(pairs, t0, t1):
     return (p[-1][1] - p[0][1])/(p[-1][0] - p[0][0])
 
 
+def mass_balance(case, mon, esc):
+    """The seeded mass, 0.6 x the seeded region's volume x 860 kg/m3
+    (constant/seededParcels: solidsVolume, full precision), and the largest
+    |cloud + escaped - seeded|/seeded over the monitor's steps (escapes
+    matched by time; the log's injected mass has 8 digits only)."""
+    path = os.path.join(case, "constant", "seededParcels")
+    if not os.path.isfile(path) or not mon:
+        return float("nan"), float("nan")
+    seeded = float(post.dict_entry(path, "solidsVolume"))*RHO_P
+    lost = {round(t, 9): m for t, n, m in esc}
+    worst, last = 0.0, 0.0
+    for r in mon:
+        last = lost.get(round(r[0], 9), last)
+        worst = max(worst, abs((r[2] + last)/seeded - 1))
+    return seeded, worst
+
+
 def summary(case=".", t0=None, t1=None):
     rho = float(post.dict_entry(os.path.join(case, "constant", "transportProperties"),
                            "rho.air"))
@@ -254,6 +271,7 @@ def summary(case=".", t0=None, t1=None):
     res["maxAlphaCellAll"] = max((r[4] for r in mon), default=float("nan"))
     res["maxFastParcels"] = max((r[7] for r in mon), default=0)
     res["injectedParcels"], res["injectedMass"] = injected(case)
+    res["seededMass"], res["massBalanceWorst"] = mass_balance(case, mon, esc)
 
     tSim, clock = wall_time(case)
     res["wallPerSimSecond"] = clock/tSim if tSim else float("nan")
@@ -339,8 +357,9 @@ def print_summary(r):
     print("  cloud mass %.10g kg, parcels %d; injected %s kg, %s parcels"
           % (r["cloudMass"], r["parcels"], r["injectedMass"], r["injectedParcels"]))
     if r["injectedMass"]:
-        print("  (cloud + lost)/injected - 1 = %.3g"
-              % ((r["cloudMass"] + r["massLost"])/r["injectedMass"] - 1))
+        print("  (cloud + lost)/injected - 1 = %.3g; against the seeded %.12g kg, largest "
+              "over the steps %.3g" % ((r["cloudMass"] + r["massLost"])/r["injectedMass"] - 1,
+                                       r["seededMass"], r["massBalanceWorst"]))
     print("  largest cell solids fraction: %.4f in the window, %.4f over the run"
           % (r["maxAlphaCell"], r["maxAlphaCellAll"]))
     print("  wall time per simulated second            %8.0f s" % r["wallPerSimSecond"])
