@@ -354,7 +354,7 @@ def print_summary(r):
     print("  circulation, crossover plane              %8.4f kg/s" % r["circulationCrossover"])
     print("  mass lost through the outlet (to %.4g s)  %.6g kg (%d parcels)"
           % (r["tEnd"], r["massLost"], r["parcelsLost"]))
-    print("  cloud mass %.10g kg, parcels %d; injected %s kg, %s parcels"
+    print("  cloud mass %.12g kg, parcels %d; injected %s kg, %s parcels"
           % (r["cloudMass"], r["parcels"], r["injectedMass"], r["injectedParcels"]))
     if r["injectedMass"]:
         print("  (cloud + lost)/injected - 1 = %.3g; against the seeded %.12g kg, largest "
