@@ -16,8 +16,19 @@ SetFactory("OpenCASCADE");
 // statistical weight) is at most 5 % of a cell, see README.md.
 DefineConstant[ cellSize = {0.010, Name "Parameters/cellSize"} ];
 
+// ---- equal-area pipes (departs, optional) ----------------------------------
+// A pipe a few cells across is meshed as a polygon inscribed in its circle,
+// with less cross-section: the 1" pipes (a 1" circle in 6 edges of 14 mm)
+// have 17 % less area on the coarse mesh, 8 % on the fine one, the 2"
+// riser 4 % and 2 %; the gas in them runs faster by as much (README,
+// "Equal-area pipes"). Allrun -equalArea scales the diameters so that the
+// meshed cross-sections have the pipes' areas (to 0.5 %, pipeArea in
+// README): 1" by diameterScale1in, the 2" riser by diameterScale2in.
+DefineConstant[ diameterScale1in = {1, Name "Parameters/diameterScale1in"} ];
+DefineConstant[ diameterScale2in = {1, Name "Parameters/diameterScale2in"} ];
+
 // ---- riser ----------------------------------------------------------------
-riserD    = 0.0508;     // inner diameter (2")
+riserD    = 0.0508*diameterScale2in;    // inner diameter (2")
 riserX    = 0.282;      // axis x
 axisZ     = 0.075;      // z of every axis (the loop lies in the plane z = axisZ)
 riserTop  = 1.2686;     // closed top (riser from y = 0)
@@ -33,7 +44,7 @@ roofY     = 1.2749;     // roof
 coneY0    = 0.932;      // cone bottom = standpipe top
 
 // ---- crossover (riser -> cyclone), tangential entry ------------------------
-crossD    = 0.0254;     // 1"
+crossD    = 0.0254*diameterScale1in;     // 1"
 crossY    = 1.218;      // axis height
 // distance of the crossover axis from the cyclone axis: the record's STL
 // has ~0.052, where the pipe would stand 1.2 mm outside the barrel wall
@@ -42,16 +53,16 @@ crossY    = 1.218;      // axis height
 crossOffset = 0.048;
 
 // ---- vortex finder and gas outlet -------------------------------------------
-vfD       = 0.0254;     // exit tube bore (1")
+vfD       = 0.0254*diameterScale1in;     // exit tube bore (1")
 sleeveD   = 0.0476;     // outer diameter of the vortex-finder sleeve
 vfY0      = 1.1225;     // open bottom of the vortex finder (inside the cyclone)
 outletY   = 1.32;       // gas outlet (top of the exit tube)
 
 // ---- standpipe and L-valve ----------------------------------------------------
-standD    = 0.0254;     // 1"
+standD    = 0.0254*diameterScale1in;     // 1"
 standY0   = 0.146;      // bottom of the straight standpipe (start of the bend)
 legY      = 0.0176;     // axis height of the horizontal leg
-legD      = 0.0254;     // 1"
+legD      = 0.0254*diameterScale1in;     // 1"
 bendR     = standY0 - legY;   // bend centre-line radius (0.1284)
 bendX     = cycX + bendR;     // arc centre x (0.2011)
 
