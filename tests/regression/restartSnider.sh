@@ -23,17 +23,7 @@ prepare()
     copyTutorial validation/uniformFluidization "$1"
     setEntry "$1" system/controlDict writeFormat binary
     setEntry "$1" system/controlDict writePrecision 17
-    cat > "$1/constant/prescribedGasFlowProperties" <<'DICT'
-FoamFile
-{
-    version     2.0;
-    format      ascii;
-    class       dictionary;
-    object      prescribedGasFlowProperties;
-}
-type        uniform;
-U           (0 0.8 0);
-DICT
+    uniformGasFlow "$1" "(0 0.8 0)"
 }
 
 prepare "$runDir/whole"

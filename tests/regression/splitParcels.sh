@@ -23,17 +23,7 @@ runDir="${1:?usage: splitParcels.sh <runDir>}"
 case="$runDir/case"
 copyTutorial validation/uniformFluidization "$case"
 setEntry "$case" system/controlDict writePrecision 17
-cat > "$case/constant/prescribedGasFlowProperties" <<'DICT'
-FoamFile
-{
-    version     2.0;
-    format      ascii;
-    class       dictionary;
-    object      prescribedGasFlowProperties;
-}
-type        uniform;
-U           (0 0.8 0);
-DICT
+uniformGasFlow "$case" "(0 0.8 0)"
 runAllrun "$case" 0.01 || exit 1
 rm -rf "$runDir/before"
 cp -r "$case/0.01" "$runDir/before"
