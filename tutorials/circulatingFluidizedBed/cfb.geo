@@ -20,10 +20,10 @@ DefineConstant[ cellSize = {0.010, Name "Parameters/cellSize"} ];
 // A pipe a few cells across is meshed as a polygon inscribed in its circle,
 // with less cross-section: the 1" pipes (a 1" circle in 6 edges of 14 mm)
 // have 17 % less area on the coarse mesh, 8 % on the fine one, the 2"
-// riser 4 % and 2 %; the gas in them runs faster by as much (README,
+// riser 4 % and 2 %; the gas in them runs faster (20 % in the coarse 1" pipes; README,
 // "Equal-area pipes"). Allrun -equalArea scales the diameters so that the
-// meshed cross-sections have the pipes' areas (to 0.5 %, pipeArea in
-// README): 1" by diameterScale1in, the 2" riser by diameterScale2in.
+// meshed cross-sections have the pipes' areas (to 0.5 %, test
+// cfbEqualArea): 1" by diameterScale1in, the 2" riser by diameterScale2in.
 DefineConstant[ diameterScale1in = {1, Name "Parameters/diameterScale1in"} ];
 DefineConstant[ diameterScale2in = {1, Name "Parameters/diameterScale2in"} ];
 
