@@ -124,21 +124,14 @@ setEntry "$case" system/controlDict startFrom latestTime
 setEntry "$case" system/controlDict stopAt writeNow
 (cd "$case" && mppicPimpleFoam > log.split 2>&1) || { echo "FAIL the solver on the split cloud"; exit 1; }
 /usr/bin/python3 - <<'PY' || status=1
-import glob, math, os, re, sys
+import glob, math, os, sys
 import checks
-from checks import report as check
+from checks import read_list, report as check
 log = open("case/log.split").read()
 check("outside of the mesh" not in log and "FOAM FATAL" not in log,
       "the solver read the split cloud: no parcel outside the mesh")
-def values(path):
-    text = open(path).read()
-    body = text[text.index("}", text.index("FoamFile")) + 1:]
-    m = re.search(r"(\d+)\s*\{([^}]*)\}", body)
-    if m and "(" not in body[:m.start()]:
-        return [float(m.group(2))]*int(m.group(1))
-    return [float(v) for v in body[body.index("(") + 1:body.rindex(")")].split()]
 def mass(lag):
-    nP, d, rho = (values(os.path.join(lag, f)) for f in ("nParticle", "d", "rho"))
+    nP, d, rho = (read_list(os.path.join(lag, f)) for f in ("nParticle", "d", "rho"))
     return len(nP), math.fsum(a*r*math.pi/6*b**3 for a, b, r in zip(nP, d, rho))
 t = max((x for x in glob.glob("case/0.01*") if x != "case/0.01"),
         key=lambda x: float(os.path.basename(x)))

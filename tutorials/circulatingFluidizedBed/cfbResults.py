@@ -190,7 +190,8 @@ def mass_balance(case, mon, esc):
     """The seeded mass, 0.6 x the seeded region's volume x 860 kg/m3
     (constant/seededParcels: solidsVolume, full precision), and the largest
     |cloud + escaped - seeded|/seeded over the monitor's steps (escapes
-    matched by time; the log's injected mass has 8 digits only)."""
+    matched by time; the log prints the injected mass to writePrecision
+    digits only)."""
     path = os.path.join(case, "constant", "seededParcels")
     if not os.path.isfile(path) or not mon:
         return float("nan"), float("nan")
