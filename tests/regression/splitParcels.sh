@@ -14,8 +14,10 @@
 #   - no parcel initialised outside the mesh (the solver's warning), 4 N
 #     parcels, and the cloud's mass that of the 0.01 s cloud to 1e-12
 #     (from the parcels' own fields);
-# and the bad inputs stop with a message, exit status 1 and no file changed:
-# K = 1, and --nParticle 1 % off nParticle/K.
+# and the bad inputs stop with their message, exit status 1 and no file
+# changed: K = 1, --nParticle 1 % off nParticle/K, a decomposed case, a
+# binary field, a field one entry short, no cloud at the time, no geometry
+# entry in the cloud's uniform properties.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: splitParcels.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -31,17 +33,43 @@ cp -r "$case/0.01" "$runDir/before"
 status=0
 nP=$(sed -n 's/^\([0-9]*\){\(.*\)}$/\2/p' "$case/0.01/lagrangian/kinematicCloud/nParticle")
 bad=$(/usr/bin/python3 -c "print(repr(1.01*float('${nP:-1}')/4))")
-for args in "1" "4 --nParticle $bad"
-do
-    out=$("$MPPIC_PROJECT_DIR/bin/splitParcels" "$case" 0.01 $args 2>&1)
+lag=0.01/lagrangian/kinematicCloud
+# refused LABEL 'EDIT' 'ARGS' 'MESSAGE': on a copy of the case changed by EDIT
+# (run in the copy), splitParcels ARGS stops with exit status 1 and a message
+# containing MESSAGE, and the copy's 0.01 is as it was after EDIT
+refused()
+{
+    local copy="$runDir/refused" out rc
+    rm -rf "$copy"; cp -r "$case" "$copy"
+    (cd "$copy" && eval "$2")
+    cp -r "$copy/0.01" "$runDir/refusedBefore"
+    out=$("$MPPIC_PROJECT_DIR/bin/splitParcels" "$copy" $3 2>&1)
     rc=$?
-    if [ $rc = 1 ] && diff -r -q "$runDir/before" "$case/0.01" > /dev/null
+    if [ $rc = 1 ] && [[ "$out" == *"$4"* ]] \
+    && diff -r -q "$runDir/refusedBefore" "$copy/0.01" > /dev/null
     then
-        echo "PASS splitParcels $args: exit 1, nothing changed: $out"
+        echo "PASS splitParcels $1: exit 1, nothing changed: $out"
     else
-        echo "FAIL splitParcels $args: exit $rc (or files changed): $out"; status=1
+        echo "FAIL splitParcels $1: exit $rc, expected \"$4\" (or files changed): $out"; status=1
     fi
-done
+    rm -rf "$copy" "$runDir/refusedBefore"
+}
+# oneShort FILE: a uniform list N{v} becomes (N - 1){v}
+oneShort()
+{
+    /usr/bin/python3 -c 'import re, sys; s = open(sys.argv[1]).read()
+open(sys.argv[1], "w").write(re.sub(r"(?m)^(\d+)\{", lambda m: "%d{" % (int(m.group(1)) - 1), s))' "$1"
+}
+refused "K = 1" ':' '0.01 1' 'split into 2 or more'
+refused "--nParticle 1 % off" ':' "0.01 4 --nParticle $bad" 'off a parcel'
+refused "decomposed case" 'mkdir processor0' '0.01 4' 'is decomposed'
+refused "binary field" "sed -i 's/format *ascii;/format      binary;/' $lag/d" \
+    '0.01 4' 'format binary'
+refused "a field one entry short" "oneShort $lag/nParticle" '0.01 4' 'entries for'
+refused "no cloud at the time" ':' '0.5 4' 'no positions file'
+refused "no geometry entry" \
+    "sed -i '/geometry/d' 0.01/uniform/lagrangian/kinematicCloud/cloudProperties" \
+    '0.01 4' 'no geometry entry'
 [ -n "$nP" ] || { echo "FAIL the 0.01 s cloud has no uniform nParticle"; status=1; }
 
 "$MPPIC_PROJECT_DIR/bin/splitParcels" "$case" 0.01 4 || exit 1
