@@ -14,8 +14,8 @@ values and our relative error (height: difference in m); and, to say how
 steady the window is, the circulation down the standpipe and along the
 crossover (equal in a steady loop) and the change of the level over the
 window (slope of a straight-line fit). --out writes the table as Markdown;
---plot draws riser and standpipe pressure drop and the level against time
-for all runs from --start (default 0.5 s, after the start-up transient),
+--plot draws riser and standpipe pressure drop (every step faint, 0.1 s
+means bold) and the level against time for all runs from --start (default 0.5 s, after the start-up transient),
 with the experiment's values as dashed lines and, with --switch T, a
 vertical line where runs started from another case's state (--switchText
 says what happened there). --labels "A;B" colours the lines by run, one
@@ -89,6 +89,14 @@ def table(runs, ref):
     return "\n".join(lines + [""] + ["- " + n for n in notes]), results
 
 
+def block_means(series, width):
+    """(mid-time, mean) of the (t, v) pairs in consecutive blocks of width s."""
+    blocks = {}
+    for t, v in series:
+        blocks.setdefault(int((t - series[0][0])/width), []).append(v)
+    return [(series[0][0] + (k + 0.5)*width, sum(v)/len(v)) for k, v in sorted(blocks.items())]
+
+
 def plot(results, ref, path, start, switch, labels=None,
          switchText="cases 2, 3 start from case 1 here"):
     import matplotlib
@@ -106,9 +114,16 @@ def plot(results, ref, path, start, switch, labels=None,
             s = r[series]
             shift = cfbResults.STANDPIPE_Y0 if series == "levelSeries" else 0
             s = [(t, v) for t, v in s if t >= start]
-            step = max(1, len(s)//4000)
-            ax.plot([t for t, v in s[::step]], [v - shift for t, v in s[::step]],
-                    color=colour, lw=0.6, label=name)
+            if series == "levelSeries":
+                ax.plot([t for t, v in s], [v - shift for t, v in s], color=colour, lw=0.8,
+                        label=name)
+            else:
+                # every step faint (the taps of a packed bed jump from step
+                # to step), the 0.1 s means over it
+                step = max(1, len(s)//4000)
+                ax.plot([t for t, v in s[::step]], [v for t, v in s[::step]],
+                        color=colour, lw=0.4, alpha=0.25)
+                ax.plot(*zip(*block_means(s, 0.1)), color=colour, lw=1.2, label=name)
             ax.axhline(ref[case][refKey], color="k" if labels else colour,
                        ls="--", lw=1)
             ax.set_ylabel(label)
