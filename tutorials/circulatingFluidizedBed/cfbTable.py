@@ -15,9 +15,10 @@ steady the window is, the circulation down the standpipe and along the
 crossover (equal in a steady loop) and the change of the level over the
 window (slope of a straight-line fit). --out writes the table as Markdown;
 --plot draws riser and standpipe pressure drop (every step faint, 0.1 s
-means bold) and the level against time for all runs from --start (default 0.5 s, after the start-up transient),
-with the experiment's values as dashed lines and, with --switch T, a
-vertical line where runs started from another case's state (--switchText
+means bold) and the level against time for all runs from --start (default
+0.5 s, after the start-up transient), with the experiment's values as
+dashed lines and, with --switch T, a vertical line where runs started from
+another case's state (--switchText
 says what happened there). --labels "A;B" colours the lines by run, one
 label each, instead of by case.
 """
