@@ -2,7 +2,8 @@
 # badInput-sniderCoeffs <runDir>: mfixSnider with pSolid -1, gamma -1,
 # slipVelocityFactor 1.5, capFactor 0.5, collisionDamping maybe,
 # meanFreePathCap perhaps, restWhereConverging sometimes, capacityLimit
-# often, holdSupportedPacks rarely, releaseAbove 0.6 and 1.2 (outside
+# often, holdSupportedPacks rarely, pushThrough sometimes, pushThrough
+# true with capacityLimit false, releaseAbove 0.6 and 1.2 (outside
 # (closePackFraction, 1]), supportAngle 100, supportPatches
 # (nowhere), conserveMomentum perhaps and a misspelt
 # keyword (colisionDamping) -> FatalIOError naming the
@@ -39,5 +40,8 @@ tryCoeffs "supportPatches (nowhere);" "supportPatches" "nowhere"
 tryCoeffs "conserveMomentum perhaps;" "conserveMomentum" "perhaps"
 tryCoeffs "releaseAbove 0.6;" "releaseAbove" "0.6" "(0.6, 1]"
 tryCoeffs "releaseAbove 1.2;" "releaseAbove" "1.2" "(0.6, 1]"
+tryCoeffs "pushThrough sometimes;" "pushThrough" "sometimes"
+tryCoeffs "capacityLimit false; pushThrough true;" "pushThrough" "true" \
+    "capacityLimit"
 tryCoeffs "colisionDamping true;" "colisionDamping" "collisionDamping"
 exit $status

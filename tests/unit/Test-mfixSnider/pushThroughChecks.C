@@ -3,7 +3,9 @@
     This file is part of the mppicModels project, GPL-3.0-or-later.
 -------------------------------------------------------------------------------
 Description
-    Test-mfixSnider's check of coloringFunction's pushThrough (hand values).
+    Test-mfixSnider's check of pushThrough (hand values), in
+    coloringFunction and in mfixSnider (pSolid 0: no stress impulse, so
+    the capacity limit's moves alone; the same hand values).
     Cells 0.25 x 0.25 x 0.1. Rows 1 and 2 of the box are full, and row 0
     but for column 0: 5 parcels of 0.12 of a cell in each cell (0.60; at
     close pack 0.62 a sixth does not fit: 0.12 > 0.02 + 0.5*0.12), at
@@ -48,6 +50,7 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
     const scalar Vcell = 0.25*0.25*0.1;
     const scalar n = 0.12*Vcell/Vp;
     const scalar dt = 1e-3;
+    for (const word modelName : {"coloringFunction", "mfixSnider"})
     for (const label setUp : {0, 1, 2})
     {
         const bool push = setUp > 0;
@@ -97,16 +100,23 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
         coeffs.add("closePackFraction", 0.62);
         coeffs.add("holdSupportedPacks", false);
         coeffs.add("pushThrough", push);
+        if (modelName == "mfixSnider")
+        {
+            coeffs.add("pSolid", 0.0);
+        }
         autoPtr<PackingModel<cloudType>> model
         (
-            newPackingModel(cloud, "coloringFunction", coeffs)
+            newPackingModel(cloud, modelName, coeffs)
         );
         parcelType::trackingData td(cloud);
         td.updateAverages(cloud);
         model->cacheFields(true);
 
-        const word tag = level ? "pushThrough true, level parcels: "
-          : push ? "pushThrough true: " : "pushThrough false: ";
+        const word tag = modelName + ", "
+          + (
+                level ? "pushThrough true, level parcels: "
+              : push ? "pushThrough true: " : "pushThrough false: "
+            );
         const vector fall = dt*model->velocityCorrection(*falling, dt);
         if (push)
         {

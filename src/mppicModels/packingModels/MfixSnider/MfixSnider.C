@@ -17,6 +17,7 @@ Foam::PackingModels::MfixSnider<CloudType>::keywords
     "slipVelocityFactor", "capFactor", "meanFreePathCap",
     "restWhereConverging", "releaseAbove", "collisionDamping", "capacityLimit",
     "holdSupportedPacks", "supportPatches", "supportAngle", "overfill",
+    "pushThrough",
     "conserveMomentum", "freePackReactionsToGas", "followDrainingPacks",
     "drainTime"
 });
@@ -51,6 +52,19 @@ Foam::PackingModels::MfixSnider<CloudType>::checkedCoeffs
             << "Dictionary " << coeffs.name()
             << ", keyword freePackReactionsToGas: value true is not"
             << " available with mfixSnider (allowed: false)"
+            << exit(FatalIOError);
+    }
+    // Without the capacity limit nothing is refused, so nothing is pushed
+    if
+    (
+        coeffs.lookupOrDefault<bool>("pushThrough", false)
+     && !coeffs.lookupOrDefault<bool>("capacityLimit", true)
+    )
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Dictionary " << coeffs.name()
+            << ", keyword pushThrough: value true needs capacityLimit true"
+            << " (allowed with capacityLimit false: false)"
             << exit(FatalIOError);
     }
     return coeffs;
