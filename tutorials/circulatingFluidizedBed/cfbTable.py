@@ -90,14 +90,6 @@ def table(runs, ref):
     return "\n".join(lines + [""] + ["- " + n for n in notes]), results
 
 
-def block_means(series, width):
-    """(mid-time, mean) of the (t, v) pairs in consecutive blocks of width s."""
-    blocks = {}
-    for t, v in series:
-        blocks.setdefault(int((t - series[0][0])/width), []).append(v)
-    return [(series[0][0] + (k + 0.5)*width, sum(v)/len(v)) for k, v in sorted(blocks.items())]
-
-
 def plot(results, ref, path, start, switch, labels=None,
          switchText="cases 2, 3 start from case 1 here"):
     import matplotlib
@@ -124,7 +116,7 @@ def plot(results, ref, path, start, switch, labels=None,
                 step = max(1, len(s)//4000)
                 ax.plot([t for t, v in s[::step]], [v for t, v in s[::step]],
                         color=colour, lw=0.4, alpha=0.25)
-                ax.plot(*zip(*block_means(s, 0.1)), color=colour, lw=1.2, label=name)
+                ax.plot(*zip(*post.block_means(s, 0.1)), color=colour, lw=1.2, label=name)
             ax.axhline(ref[case][refKey], color="k" if labels else colour,
                        ls="--", lw=1)
             ax.set_ylabel(label)

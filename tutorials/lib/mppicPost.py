@@ -266,6 +266,16 @@ def mean_and_error(series, block):
     return mean, std, spread/math.sqrt(nBlocks)
 
 
+def block_means(series, width):
+    """(mid-time, mean) of a [(t, value)] series in consecutive blocks of
+    the given duration from its first time (empty blocks left out)."""
+    blocks = {}
+    for t, v in series:
+        blocks.setdefault(int((t - series[0][0])/width), []).append(v)
+    return [(series[0][0] + (k + 0.5)*width, sum(v)/len(v))
+            for k, v in sorted(blocks.items())]
+
+
 def interpolate(xs, ys, x):
     """ys at x, linear in xs (ascending); None outside [xs[0], xs[-1]]."""
     if x < xs[0] or x > xs[-1]:

@@ -51,151 +51,157 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
     const scalar n = 0.12*Vcell/Vp;
     const scalar dt = 1e-3;
     for (const word modelName : {"coloringFunction", "mfixSnider"})
-    for (const label setUp : {0, 1, 2})
     {
-        const bool push = setUp > 0;
-        const bool level = setUp == 2;
-        cloud.clear();
-        List<parcelType*> highest(2);
-        List<parcelType*> besideFall(2, nullptr);
-        for (label row = 0; row < 3; ++row)
+        for (const label setUp : {0, 1, 2})
         {
-            for (label column = row ? 0 : 1; column < 4; ++column)
+            const bool push = setUp > 0;
+            const bool level = setUp == 2;
+            cloud.clear();
+            List<parcelType*> highest(2);
+            List<parcelType*> besideFall(2, nullptr);
+            for (label row = 0; row < 3; ++row)
             {
-                for (label k = 0; k < 5; ++k)
+                for (label column = row ? 0 : 1; column < 4; ++column)
                 {
-                    point x
-                    (
-                        0.125 + 0.25*column, 0.25*row + 0.05 + 0.04*k, 0.05
-                    );
-                    if (level && row == 2 && column == 2 && k >= 3)
+                    for (label k = 0; k < 5; ++k)
                     {
-                        x = point
+                        point x
                         (
-                            k == 3 ? 0.6 : 0.65, 0.71 - 1e-12*(4 - k), 0.05
+                            0.125 + 0.25*column, 0.25*row + 0.05 + 0.04*k, 0.05
                         );
-                    }
-                    parcelType* p = newParcel(mesh, x, Zero, n);
-                    cloud.addParticle(p);
-                    if (row && column == 0 && k == 4)
-                    {
-                        highest[row - 1] = p;
-                    }
-                    if (row == 2 && column == 2 && k >= 3)
-                    {
-                        // the one to be pushed first
-                        besideFall[level ? k - 3 : 4 - k] = p;
+                        if (level && row == 2 && column == 2 && k >= 3)
+                        {
+                            x = point
+                            (
+                                k == 3 ? 0.6 : 0.65, 0.71 - 1e-12*(4 - k), 0.05
+                            );
+                        }
+                        parcelType* p = newParcel(mesh, x, Zero, n);
+                        cloud.addParticle(p);
+                        if (row && column == 0 && k == 4)
+                        {
+                            highest[row - 1] = p;
+                        }
+                        if (row == 2 && column == 2 && k >= 3)
+                        {
+                            // the one to be pushed first
+                            besideFall[level ? k - 3 : 4 - k] = p;
+                        }
                     }
                 }
             }
-        }
-        parcelType* rising =
-            newParcel(mesh, point(0.125, 0.3, 0.05), vector(0, 1, 0), n);
-        parcelType* falling =
-            newParcel(mesh, point(0.875, 0.7, 0.05), vector(0, -1, 0), n);
-        cloud.addParticle(rising);
-        cloud.addParticle(falling);
+            parcelType* rising =
+                newParcel(mesh, point(0.125, 0.3, 0.05), vector(0, 1, 0), n);
+            parcelType* falling =
+                newParcel(mesh, point(0.875, 0.7, 0.05), vector(0, -1, 0), n);
+            cloud.addParticle(rising);
+            cloud.addParticle(falling);
 
-        dictionary coeffs;
-        coeffs.add("closePackFraction", 0.62);
-        coeffs.add("holdSupportedPacks", false);
-        coeffs.add("pushThrough", push);
-        if (modelName == "mfixSnider")
-        {
-            coeffs.add("pSolid", 0.0);
-        }
-        autoPtr<PackingModel<cloudType>> model
-        (
-            newPackingModel(cloud, modelName, coeffs)
-        );
-        parcelType::trackingData td(cloud);
-        td.updateAverages(cloud);
-        model->cacheFields(true);
+            dictionary coeffs;
+            coeffs.add("closePackFraction", 0.62);
+            coeffs.add("holdSupportedPacks", false);
+            coeffs.add("pushThrough", push);
+            if (modelName == "mfixSnider")
+            {
+                coeffs.add("pSolid", 0.0);
+            }
+            autoPtr<PackingModel<cloudType>> model
+            (
+                newPackingModel(cloud, modelName, coeffs)
+            );
+            parcelType::trackingData td(cloud);
+            td.updateAverages(cloud);
+            model->cacheFields(true);
 
-        const word tag = modelName + ", "
-          + (
-                level ? "pushThrough true, level parcels: "
-              : push ? "pushThrough true: " : "pushThrough false: "
-            );
-        const vector fall = dt*model->velocityCorrection(*falling, dt);
-        if (push)
-        {
-            const scalar y = falling->position().y() + fall.y();
-            checkTrue
-            (
-                tag + "the falling parcel stays in row 2 (y + dX_y "
-              + Foam::name(y) + ")",
-                y > 0.5 && y < 0.75
-            );
-            parcelType& p = *besideFall[0];
-            const vector move = dt*model->velocityCorrection(p, dt);
-            checkClose
-            (
-                tag + "column 2, row 2's parcel at y "
-              + Foam::name(p.position().y()) + " pushed up, dX_y",
-                move.y(), 0.0425 + (level ? 1e-12 : 0), 1e-9
-            );
-            parcelType& q = *besideFall[1];
-            const scalar yq =
-                q.position().y() + dt*model->velocityCorrection(q, dt).y();
-            checkTrue
-            (
-                tag + "the other at y " + Foam::name(q.position().y())
-              + " stays in row 2 (y + dX_y " + Foam::name(yq) + ")",
-                yq < 0.75
-            );
-        }
-        else
-        {
-            checkTrue
-            (
-                tag + "the falling parcel goes back up (dX_y "
-              + Foam::name(fall.y()) + " > 0.05)",
-                fall.y() > 0.05
-            );
-        }
-        const vector rise = dt*model->velocityCorrection(*rising, dt);
-        if (push)
-        {
-            const scalar y = rising->position().y() + rise.y();
-            checkTrue
-            (
-                tag + "the rising parcel stays in row 1 (y + dX_y "
-              + Foam::name(y) + ")",
-                y > 0.25 && y < 0.5
-            );
-        }
-        else
-        {
-            checkTrue
-            (
-                tag + "the rising parcel goes back down (dX_y "
-              + Foam::name(rise.y()) + " < -0.05)",
-                rise.y() < -0.05
-            );
-        }
-
-        for (label row = 1; row < 3; ++row)
-        {
-            parcelType& p = *highest[row - 1];
-            const vector move = dt*model->velocityCorrection(p, dt);
-            const word which = "row " + Foam::name(row) + "'s parcel at y "
-              + Foam::name(p.position().y());
+            const word tag = modelName + ", "
+              + (
+                    level ? "pushThrough true, level parcels: "
+                  : push ? "pushThrough true: " : "pushThrough false: "
+                );
+            const vector fall = dt*model->velocityCorrection(*falling, dt);
             if (push)
             {
-                checkClose(tag + which + " pushed up, dX_y", move.y(), 0.0425, 1e-9);
-                checkClose(tag + which + ", dX_x", move.x(), 0, 1e-12, 1);
+                const scalar y = falling->position().y() + fall.y();
+                checkTrue
+                (
+                    tag + "the falling parcel stays in row 2 (y + dX_y "
+                  + Foam::name(y) + ")",
+                    y > 0.5 && y < 0.75
+                );
+                parcelType& p = *besideFall[0];
+                const vector move = dt*model->velocityCorrection(p, dt);
+                checkClose
+                (
+                    tag + "column 2, row 2's parcel at y "
+                  + Foam::name(p.position().y()) + " pushed up, dX_y",
+                    move.y(), 0.0425 + (level ? 1e-12 : 0), 1e-9
+                );
+                parcelType& q = *besideFall[1];
+                const scalar yq =
+                    q.position().y() + dt*model->velocityCorrection(q, dt).y();
+                checkTrue
+                (
+                    tag + "the other at y " + Foam::name(q.position().y())
+                  + " stays in row 2 (y + dX_y " + Foam::name(yq) + ")",
+                    yq < 0.75
+                );
             }
             else
             {
                 checkTrue
                 (
-                    tag + which + " stays in its row",
-                    p.position().y() + move.y() < 0.25*(row + 1)
+                    tag + "the falling parcel goes back up (dX_y "
+                  + Foam::name(fall.y()) + " > 0.05)",
+                    fall.y() > 0.05
                 );
             }
+            const vector rise = dt*model->velocityCorrection(*rising, dt);
+            if (push)
+            {
+                const scalar y = rising->position().y() + rise.y();
+                checkTrue
+                (
+                    tag + "the rising parcel stays in row 1 (y + dX_y "
+                  + Foam::name(y) + ")",
+                    y > 0.25 && y < 0.5
+                );
+            }
+            else
+            {
+                checkTrue
+                (
+                    tag + "the rising parcel goes back down (dX_y "
+                  + Foam::name(rise.y()) + " < -0.05)",
+                    rise.y() < -0.05
+                );
+            }
+
+            for (label row = 1; row < 3; ++row)
+            {
+                parcelType& p = *highest[row - 1];
+                const vector move = dt*model->velocityCorrection(p, dt);
+                const word which = "row " + Foam::name(row) + "'s parcel at y "
+                  + Foam::name(p.position().y());
+                if (push)
+                {
+                    checkClose
+                    (
+                        tag + which + " pushed up, dX_y", move.y(), 0.0425,
+                        1e-9
+                    );
+                    checkClose(tag + which + ", dX_x", move.x(), 0, 1e-12, 1);
+                }
+                else
+                {
+                    checkTrue
+                    (
+                        tag + which + " stays in its row",
+                        p.position().y() + move.y() < 0.25*(row + 1)
+                    );
+                }
+            }
+            model->cacheFields(false);
         }
-        model->cacheFields(false);
     }
     cloud.clear();
 }
