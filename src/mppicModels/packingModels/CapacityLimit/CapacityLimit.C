@@ -7,6 +7,16 @@
 #include "cellRoom.H"
 #include "processorPolyPatch.H"
 
+// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::wordList Foam::CapacityLimit<CloudType>::keywords
+({
+    "supportPatches", "supportAngle", "overfill", "pushThrough",
+    "followDrainingPacks", "drainTime"
+});
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>

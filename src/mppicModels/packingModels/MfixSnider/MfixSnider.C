@@ -16,10 +16,7 @@ Foam::PackingModels::MfixSnider<CloudType>::keywords
     "closePackFraction", "pSolid", "gamma", "eps", "e1",
     "slipVelocityFactor", "capFactor", "meanFreePathCap",
     "restWhereConverging", "releaseAbove", "collisionDamping", "capacityLimit",
-    "holdSupportedPacks", "supportPatches", "supportAngle", "overfill",
-    "pushThrough",
-    "conserveMomentum", "freePackReactionsToGas", "followDrainingPacks",
-    "drainTime"
+    "holdSupportedPacks", "conserveMomentum", "freePackReactionsToGas"
 });
 
 
@@ -34,12 +31,17 @@ Foam::PackingModels::MfixSnider<CloudType>::checkedCoeffs
 {
     for (const entry& e : coeffs)
     {
-        if (!keywords.found(e.keyword()))
+        if
+        (
+            !keywords.found(e.keyword())
+         && !CapacityLimit<CloudType>::keywords.found(e.keyword())
+        )
         {
             FatalIOErrorInFunction(coeffs)
                 << "Unknown keyword " << e.keyword() << " in "
                 << coeffs.name() << nl
-                << "mfixSnider reads " << keywords
+                << "mfixSnider reads " << keywords << " and "
+                << CapacityLimit<CloudType>::keywords
                 << exit(FatalIOError);
         }
     }
