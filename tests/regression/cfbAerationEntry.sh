@@ -18,6 +18,8 @@
 #     (QaerationBendPort 0);
 #   - -aeration bogus stops before meshing, exit 1, with a message naming the
 #     value and the allowed ones.
+#   - -continue -parallel where there are no processor folders stops, exit 1,
+#     with a message naming them, and runs nothing.
 # Positions to 1e-6 m, velocities and flows to 1e-5 relative.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: cfbAerationEntry.sh <runDir>}"
@@ -34,6 +36,15 @@ then
     echo "PASS -aeration bogus: exit 1, nothing meshed: $out"
 else
     echo "FAIL -aeration bogus: exit $rc (or meshed): $out"; status=1
+fi
+out=$(cd "$bad" && ./Allrun -continue -endTime 1 -parallel 2>&1)
+rc=$?
+if [ $rc = 1 ] && [[ "$out" == *"-continue -parallel: no processor folders"* ]] \
+&& [ ! -e "$bad/log.mppicPimpleFoam" ]
+then
+    echo "PASS -continue -parallel without processor folders: exit 1, nothing run: $out"
+else
+    echo "FAIL -continue -parallel without processor folders: exit $rc: $out"; status=1
 fi
 
 copyTutorial circulatingFluidizedBed "$runDir/leg"

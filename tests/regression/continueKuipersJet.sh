@@ -16,6 +16,8 @@
 # 2/x.dat (t 2, 2.5: a piece stopped), 2/x_2.dat (t 2-5: the piece
 # continued from the same 2 s, which OpenFOAM writes beside it) must read
 # t 0, 1, 2, 3, 4, 5 with the values of x_2.dat from 2 on.
+# ./Allrun 0.03 -continue -parallel on this serial run stops, exit 1, with a
+# message that names the missing processor folders, and runs nothing.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: continueKuipersJet.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
@@ -24,8 +26,20 @@ copyTutorial kuipersJet "$runDir/case"
 runAllrun "$runDir/case" 0.01 || exit 1
 runAllrun "$runDir/case" 0.02 -continue || exit 1
 
+# a serial run asked to continue on processor folders it does not have
+status=0
+out=$(cd "$runDir/case" && ./Allrun 0.03 -continue -parallel 2>&1)
+rc=$?
+if [ $rc = 1 ] && [[ "$out" == *"-continue -parallel: no processor folders"* ]] \
+&& [ ! -d "$runDir/case/0.03" ]
+then
+    echo "PASS -continue -parallel without processor folders: exit 1, nothing run: $out"
+else
+    echo "FAIL -continue -parallel without processor folders: exit $rc: $out"; status=1
+fi
+
 cd "$runDir/case" || exit 1
-/usr/bin/python3 - <<'PY'
+/usr/bin/python3 - <<'PY' || status=1
 import re, sys
 import checks
 from checks import report as check
@@ -61,3 +75,4 @@ check(read == [(0, 0), (1, 0), (2, 2), (3, 2), (4, 2), (5, 2)],
       "function_object_table over a piece continued from where another stopped: %s" % read)
 sys.exit(checks.status())
 PY
+exit $status

@@ -115,7 +115,8 @@ void Foam::ParcelEntries<CloudType>::update
         const label from,
         const label remote,
         const vector& direction,
-        const scalar depth
+        const scalar depth,
+        const scalar lead
     )
     {
         const scalar volume = p.nParticle()*p.volume();
@@ -123,7 +124,7 @@ void Foam::ParcelEntries<CloudType>::update
         e.direction = direction;
         e.from = from;
         e.remote = remote;
-        entrants[p.cell()].append({&p, depth, volume, from, remote});
+        entrants[p.cell()].append({&p, depth, lead, volume, from, remote});
 
         if (from >= 0)
         {
@@ -152,6 +153,7 @@ void Foam::ParcelEntries<CloudType>::update
           : -1,
             -1,
             -n,
+            depth,
             depth
         );
     };
@@ -186,7 +188,9 @@ void Foam::ParcelEntries<CloudType>::update
                 mesh.cellCentres()[celli] - mesh.cellCentres()[from];
             const scalar depth = mag(direction);
             direction /= max(depth, VSMALL);
-            enter(p, from, -1, direction, depth);
+            const scalar lead =
+                (p.position() - mesh.cellCentres()[from]) & direction;
+            enter(p, from, -1, direction, depth, lead);
         }
         else if (Pstream::parRun())
         {
@@ -225,7 +229,8 @@ void Foam::ParcelEntries<CloudType>::update
             vector direction = mesh.cellCentres()[pp->cell()] - o.centre;
             const scalar depth = mag(direction);
             direction /= max(depth, VSMALL);
-            enter(*pp, -1, iter.val(), direction, depth);
+            const scalar lead = (pp->position() - o.centre) & direction;
+            enter(*pp, -1, iter.val(), direction, depth, lead);
         }
     }
 
@@ -259,7 +264,7 @@ void Foam::ParcelEntries<CloudType>::admitUpToClosePack
 )
 {
     // Start from every entrant admitted; a cell refuses those that do not
-    // fit, a refused parcel goes back to the cell it came from, which then
+    // fit (in an order that does not depend on the parcel list's), a refused parcel goes back to the cell it came from, which then
     // has less room: revisit that cell. Admissions only ever turn into
     // refusals, so this ends.
     DynamicList<label> pending;
@@ -273,7 +278,17 @@ void Foam::ParcelEntries<CloudType>::admitUpToClosePack
                 entrants[celli].end(),
                 [](const entrant& a, const entrant& b)
                 {
-                    return a.depth > b.depth;
+                    if (a.depth != b.depth)
+                    {
+                        return a.depth > b.depth;
+                    }
+                    if (a.lead != b.lead)
+                    {
+                        return a.lead > b.lead;
+                    }
+                    return
+                        labelPair(a.parcel->origProc(), a.parcel->origId())
+                      < labelPair(b.parcel->origProc(), b.parcel->origId());
                 }
             );
             for (const entrant& candidate : entrants[celli])
