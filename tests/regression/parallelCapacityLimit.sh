@@ -12,10 +12,10 @@
 # of entrants into full cells. Checks at 0.01 s:
 #   - the same parcels (origProcId, origId), each at the same place to
 #     1e-6 m and with the same velocity to 1e-4 m/s (measured when written,
-#     three runs, three meshes: at most 1.4e-9 m and 8.0e-7 m/s, round-off
+#     four runs, four meshes: at most 1.4e-9 m and 8.0e-7 m/s, round-off
 #     grown over 15 steps); with the build before entrants of equal depth
-#     (all that came from one cell) were ranked by how far each went, the
-#     order of the parcel list decided which a full cell took: 17 895 of
+#     (all that came from one cell) were ranked by pushOrderKey, the order
+#     of the parcel list decided which a full cell took: 17 895 of
 #     18 206 parcels more than 1e-9 m apart, 1286 more than 1e-6 m, up to
 #     3.2 mm and 0.40 m/s (main's tutorial, the build of 06eae10): the check
 #     can fail;

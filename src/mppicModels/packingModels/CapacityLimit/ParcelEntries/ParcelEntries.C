@@ -7,6 +7,7 @@
 #include "cellRoom.H"
 #include "coupledPolyPatch.H"
 #include "cellFaceGeometry.H"
+#include "pushOrderKey.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
@@ -115,8 +116,7 @@ void Foam::ParcelEntries<CloudType>::update
         const label from,
         const label remote,
         const vector& direction,
-        const scalar depth,
-        const scalar lead
+        const scalar depth
     )
     {
         const scalar volume = p.nParticle()*p.volume();
@@ -124,7 +124,7 @@ void Foam::ParcelEntries<CloudType>::update
         e.direction = direction;
         e.from = from;
         e.remote = remote;
-        entrants[p.cell()].append({&p, depth, lead, volume, from, remote});
+        entrants[p.cell()].append({&p, depth, volume, from, remote});
 
         if (from >= 0)
         {
@@ -153,7 +153,6 @@ void Foam::ParcelEntries<CloudType>::update
           : -1,
             -1,
             -n,
-            depth,
             depth
         );
     };
@@ -188,9 +187,7 @@ void Foam::ParcelEntries<CloudType>::update
                 mesh.cellCentres()[celli] - mesh.cellCentres()[from];
             const scalar depth = mag(direction);
             direction /= max(depth, VSMALL);
-            const scalar lead =
-                (p.position() - mesh.cellCentres()[from]) & direction;
-            enter(p, from, -1, direction, depth, lead);
+            enter(p, from, -1, direction, depth);
         }
         else if (Pstream::parRun())
         {
@@ -229,8 +226,7 @@ void Foam::ParcelEntries<CloudType>::update
             vector direction = mesh.cellCentres()[pp->cell()] - o.centre;
             const scalar depth = mag(direction);
             direction /= max(depth, VSMALL);
-            const scalar lead = (pp->position() - o.centre) & direction;
-            enter(*pp, -1, iter.val(), direction, depth, lead);
+            enter(*pp, -1, iter.val(), direction, depth);
         }
     }
 
@@ -264,9 +260,11 @@ void Foam::ParcelEntries<CloudType>::admitUpToClosePack
 )
 {
     // Start from every entrant admitted; a cell refuses those that do not
-    // fit (in an order that does not depend on the parcel list's), a refused parcel goes back to the cell it came from, which then
-    // has less room: revisit that cell. Admissions only ever turn into
-    // refusals, so this ends.
+    // fit (deepest first; of equal depth, as their pushOrderKey ranks them,
+    // not the parcel list's order), a refused parcel goes back to the cell
+    // it came from, which then has less room: revisit that cell.
+    // Admissions only ever turn into refusals, so this ends.
+    const label timeIndex = mesh.time().timeIndex();
     DynamicList<label> pending;
     forAll(entrants, celli)
     {
@@ -276,19 +274,17 @@ void Foam::ParcelEntries<CloudType>::admitUpToClosePack
             (
                 entrants[celli].begin(),
                 entrants[celli].end(),
-                [](const entrant& a, const entrant& b)
+                [timeIndex](const entrant& a, const entrant& b)
                 {
                     if (a.depth != b.depth)
                     {
                         return a.depth > b.depth;
                     }
-                    if (a.lead != b.lead)
-                    {
-                        return a.lead > b.lead;
-                    }
+                    const parcelType& pa = *a.parcel;
+                    const parcelType& pb = *b.parcel;
                     return
-                        labelPair(a.parcel->origProc(), a.parcel->origId())
-                      < labelPair(b.parcel->origProc(), b.parcel->origId());
+                        pushOrderKey(pa.origProc(), pa.origId(), timeIndex)
+                      < pushOrderKey(pb.origProc(), pb.origId(), timeIndex);
                 }
             );
             for (const entrant& candidate : entrants[celli])
