@@ -28,15 +28,8 @@ runAllrun "$runDir/case" 0.02 -continue || exit 1
 
 # a serial run asked to continue on processor folders it does not have
 status=0
-out=$(cd "$runDir/case" && ./Allrun 0.03 -continue -parallel 2>&1)
-rc=$?
-if [ $rc = 1 ] && [[ "$out" == *"-continue -parallel: no processor folders"* ]] \
-&& [ ! -d "$runDir/case/0.03" ]
-then
-    echo "PASS -continue -parallel without processor folders: exit 1, nothing run: $out"
-else
-    echo "FAIL -continue -parallel without processor folders: exit $rc: $out"; status=1
-fi
+allrunRefuses "$runDir/case" "-continue -parallel: no processor folders" 0.03 \
+    0.03 -continue -parallel || status=1
 
 cd "$runDir/case" || exit 1
 /usr/bin/python3 - <<'PY' || status=1
