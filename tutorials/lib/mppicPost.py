@@ -20,6 +20,8 @@ Statistics:
     percentile(values, q)              linear between order statistics
     mean_and_error(series, block)      mean, std and the standard error of
                                        the mean from block means
+    block_means(series, width)         (mid-time, mean) of a [(t, v)] series
+                                       in consecutive blocks of width s
     interpolate(xs, ys, x)             linear, None outside [xs[0], xs[-1]]
     window_mean(pairs, t0, t1)         mean of [(t, v)] over t0 <= t <= t1
     fit_line(points)                   least-squares slope and intercept
