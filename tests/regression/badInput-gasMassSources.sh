@@ -1,7 +1,7 @@
 #!/bin/bash
 # badInput-gasMassSources <runDir>: constant/gasMassSources with a radius of
-# 0, a negative flow, a sphere that holds no cell centre and an entry that
-# is not a sub-dictionary -> FatalIOError naming the dictionary, the keyword
+# 0, a negative flow, a sphere that holds no cell centre, an entry that
+# is not a sub-dictionary and a misspelt keyword (radus) -> FatalIOError naming the dictionary, the keyword
 # (or source), the value and the allowed range; exit status 1 before the
 # first time step, no crash.
 . "${0%/*}/badInputFunctions"
@@ -28,5 +28,7 @@ tryGasSource "port { centre (0 0.1 0); radius 0.01; volumetricFlowRate -1e-4; }"
 tryGasSource "port { centre (5 5 5); radius 0.01; volumetricFlowRate 1e-4; }" \
     "no cell centre" "radius 0.01" "(5 5 5)"
 tryGasSource "port 1e-4;" "port" "not a sub-dictionary"
+tryGasSource "port { centre (0 0.1 0); radus 0.01; volumetricFlowRate 1e-4; }" \
+    "unknown keyword radus" "radius"
 rm -f "$sources"
 exit $status

@@ -15,7 +15,9 @@
 # naming it and sometimes;
 # mfixSnider with freePackReactionsToGas true (and conserveMomentum) ->
 # FatalIOError naming freePackReactionsToGas, true and mfixSnider;
-# exit status 1, no crash (mppicPimpleFoam).
+# both models with a misspelt keyword (pushThru) -> FatalIOError naming it
+# and listing the valid ones (pushThrough among them);
+# exit status 1 (both models' cases), no crash (mppicPimpleFoam).
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
 prepareCase "$runDir/case"
@@ -55,8 +57,13 @@ brokenInBoth()
             subModels/${model}Coeffs "{ closePackFraction 0.6; $entries }"
         runBroken "$runDir/case" mppicPimpleFoam
         check fatal "$runDir/case/log.broken" $rc "$@" || status=1
+        [ $rc = 1 ] || { echo "FAIL $model: exit status $rc, not 1"; status=1; }
     done
 }
+
+# A misspelt keyword (MfixPackingModel's check of every entry)
+brokenInBoth "pushThru true;" "unknown keyword pushThru" "pushThrough" \
+    "closePackFraction"
 
 # overfill outside [0, 1] (CapacityLimit)
 brokenInBoth "overfill 1.5;" "overfill" "1.5" "[0, 1]"

@@ -18,6 +18,7 @@ Foam::diffusionSmoother Foam::AveragingMethods::Diffusion<Type>::readSmoother
     namespace coeff = mppicCoefficients;
 
     const dictionary& coeffs = dict.subDict("diffusionCoeffs");
+    coeff::checkKeywords(coeffs, {"bandwidth", "nSteps"}, "diffusion");
 
     const scalar bandwidth =
         coeff::read(coeffs, "bandwidth", coeff::bounds::above(0));

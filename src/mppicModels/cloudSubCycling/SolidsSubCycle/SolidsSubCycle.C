@@ -106,6 +106,13 @@ Foam::SolidsSubCycle<CloudType>::SolidsSubCycle(CloudType& cloud)
     maxSubCycles_(readMaxSubCycles(settings_)),
     cellExtent_()
 {
+    mppicCoefficients::checkKeywords
+    (
+        settings_,
+        {"active", "CFL", "relaxationTimeFactor", "maxSubCycles"},
+        "solidsSubCycling"
+    );
+
     if (active_)
     {
         cellExtent_ = cellExtents(cloud.mesh());

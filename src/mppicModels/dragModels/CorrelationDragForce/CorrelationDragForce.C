@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "CorrelationDragForce.H"
+#include "boundedCoefficient.H"
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
@@ -47,7 +48,15 @@ Foam::CorrelationDragForce<CloudType, Law>::CorrelationDragForce
     MppicDragForce<CloudType>(owner, mesh, dict, typeName),
     law_(this->coeffs()),
     alphacPtr_(lookupAlphac(mesh, this->coeffs()))
-{}
+{
+    wordList valid(MppicDragForce<CloudType>::keywords);
+    valid.append(Law::keywords);
+    if (Law::gasFraction)
+    {
+        valid.append("alphac");
+    }
+    mppicCoefficients::checkKeywords(this->coeffs(), valid, typeName);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

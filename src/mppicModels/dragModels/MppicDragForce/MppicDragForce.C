@@ -19,6 +19,13 @@ Foam::MppicDragForce<CloudType>::slipSourceNames
 });
 
 
+template<class CloudType>
+const Foam::wordList Foam::MppicDragForce<CloudType>::keywords
+({
+    "feedback", "slipFrom"
+});
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>

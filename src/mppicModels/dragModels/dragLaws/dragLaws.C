@@ -19,6 +19,14 @@ namespace dragLaws
     defineTypeNameAndDebug(StokesDrag, 0);
     defineTypeNameAndDebug(ConstantCdDrag, 0);
     defineTypeNameAndDebug(LinearRelaxationDrag, 0);
+
+    const wordList GidaspowDrag::keywords({"switchFraction", "blend"});
+    const wordList HillKochLaddDrag::keywords;
+    const wordList BVKDrag::keywords;
+    const wordList SyamlalOBrienDrag::keywords({"c1", "d1"});
+    const wordList StokesDrag::keywords({"voidageExponent"});
+    const wordList ConstantCdDrag::keywords({"Cd"});
+    const wordList LinearRelaxationDrag::keywords({"C"});
 }
 }
 

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "boundedCoefficient.H"
+#include "FlatOutput.H"
 #include "error.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -162,6 +163,26 @@ Foam::Ostream& Foam::mppicCoefficients::operator<<
     }
 
     return os;
+}
+
+
+void Foam::mppicCoefficients::checkKeywords
+(
+    const dictionary& dict,
+    const wordList& validKeywords,
+    const word& reader
+)
+{
+    for (const entry& e : dict)
+    {
+        if (!validKeywords.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Dictionary " << dict.name() << ": unknown keyword "
+                << e.keyword() << nl << reader << " reads "
+                << flatOutput(validKeywords) << exit(FatalIOError);
+        }
+    }
 }
 
 

@@ -21,6 +21,16 @@ Foam::PackingModels::ColoringFunction<CloudType>::impulseTypeNames
     { impulseType::neighbour, "neighbour" },
 });
 
+
+template<class CloudType>
+const Foam::wordList
+Foam::PackingModels::ColoringFunction<CloudType>::keywords
+({
+    "closePackFraction", "e1", "e2", "case1a", "case1b", "packAtClosePack",
+    "reflection", "impulse", "capacityLimit", "holdSupportedPacks",
+    "randomVelocity"
+});
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -30,7 +40,7 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     CloudType& owner
 )
 :
-    MfixPackingModel<CloudType>(dict, owner, typeName),
+    MfixPackingModel<CloudType>(dict, owner, typeName, keywords),
     rules_(this->coeffs()),
     impulse_
     (

@@ -7,6 +7,39 @@
 #include "packingFaceGradient.H"
 #include "wallPolyPatch.H"
 #include "cellFaceGeometry.H"
+#include "boundedCoefficient.H"
+
+// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::wordList
+Foam::PackingModels::MfixPackingModel<CloudType>::keywords
+({
+    "conserveMomentum", "freePackReactionsToGas"
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::dictionary&
+Foam::PackingModels::MfixPackingModel<CloudType>::checkedCoeffs
+(
+    const dictionary& dict,
+    const word& type,
+    const wordList& modelKeywords
+)
+{
+    const dictionary& coeffs = dict.subDict(type + "Coeffs");
+
+    wordList valid(modelKeywords);
+    valid.append(keywords);
+    valid.append(CapacityLimit<CloudType>::keywords);
+
+    mppicCoefficients::checkKeywords(coeffs, valid, type);
+    return coeffs;
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -15,13 +48,14 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
 (
     const dictionary& dict,
     CloudType& owner,
-    const word& type
+    const word& type,
+    const wordList& modelKeywords
 )
 :
     // The base's dictionary constructor would require a stock
     // particleStressModel entry, which these models do not use
     PackingModel<CloudType>(owner),
-    coeffs_(dict.subDict(type + "Coeffs")),
+    coeffs_(checkedCoeffs(dict, type, modelKeywords)),
     conserveMomentum_
     (
         coeffs_.template lookupOrDefault<bool>("conserveMomentum", false)

@@ -16,7 +16,7 @@ Foam::PackingModels::MfixSnider<CloudType>::keywords
     "closePackFraction", "pSolid", "gamma", "eps", "e1",
     "slipVelocityFactor", "capFactor", "meanFreePathCap",
     "restWhereConverging", "releaseAbove", "collisionDamping", "capacityLimit",
-    "holdSupportedPacks", "conserveMomentum", "freePackReactionsToGas"
+    "holdSupportedPacks"
 });
 
 
@@ -29,23 +29,6 @@ Foam::PackingModels::MfixSnider<CloudType>::checkedCoeffs
     const dictionary& coeffs
 )
 {
-    for (const entry& e : coeffs)
-    {
-        if
-        (
-            !keywords.found(e.keyword())
-         && !CapacityLimit<CloudType>::keywords.found(e.keyword())
-        )
-        {
-            FatalIOErrorInFunction(coeffs)
-                << "Unknown keyword " << e.keyword() << " in "
-                << coeffs.name() << nl
-                << "mfixSnider reads " << keywords << " and "
-                << CapacityLimit<CloudType>::keywords
-                << exit(FatalIOError);
-        }
-    }
-
     // The gas cannot take the limiter's reactions at once: on MFiX-PIC's
     // deposit the uniform bed's gas diverged within 0.04 s (issue 21)
     if (coeffs.lookupOrDefault<bool>("freePackReactionsToGas", false))
@@ -82,7 +65,7 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
     CloudType& owner
 )
 :
-    MfixPackingModel<CloudType>(dict, owner, typeName),
+    MfixPackingModel<CloudType>(dict, owner, typeName, keywords),
     rules_(checkedCoeffs(this->coeffs())),
     collisionDamping_
     (

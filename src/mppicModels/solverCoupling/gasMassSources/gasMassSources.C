@@ -60,6 +60,13 @@ void Foam::gasMassSources::addSource
 {
     using namespace mppicCoefficients;
 
+    checkKeywords
+    (
+        dict,
+        {"centre", "radius", "volumetricFlowRate", "velocity"},
+        "gasMassSources"
+    );
+
     const point centre(dict.get<point>("centre"));
     const scalar radius = read(dict, "radius", bounds::above(0));
     const scalar Q = read(dict, "volumetricFlowRate", bounds::atLeast(0));
