@@ -92,7 +92,8 @@ def write(path, case, rows, plots=(), settings="", window=""):
         or _git("rev-parse", "--short=10", "HEAD"),
         "dirty": env.get("MPPIC_VALIDATE_DIRTY",
                          "true" if _git("status", "--porcelain", "--",
-                                        "src", "applications", "tutorials")
+                                        ":/src", ":/applications",
+                                        ":/tutorials")
                          else "false") == "true",
         "date": datetime.datetime.now(datetime.timezone.utc)
         .strftime("%Y-%m-%d %H:%M UTC"),

@@ -104,6 +104,7 @@ def case_section(project, case, record):
             met_text(r["met"])))
     lines.append("")
     for png in record.get("plots", []):
+        png = os.path.basename(png)
         lines += ["![%s](validation/%s)" % (png, png), ""]
     return lines
 

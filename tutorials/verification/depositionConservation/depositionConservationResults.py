@@ -16,9 +16,12 @@ stricter view: the parcels are 2.5e-4 of the box). Sums are exact
 (math.fsum) of the values as written (17 digits).
 
 Usage: depositionConservationResults.py [--case DIR] [--period T]
-           [--label NAME] [--check] [--limit L] [--plot]
+           [--label NAME] [--check] [--limit L] [--plot] [--record FILE]
 --check exits 1 unless every period has all parcels and an error at most
---limit (default 1e-14); --plot writes depositionConservation_<label>.png.
+--limit (default 1e-14); --plot writes depositionConservation_<label>.png;
+--record FILE writes the validation matrix's record of the case
+(tutorials/lib/validationRecord.py): the largest error against --limit and
+MFiX-PIC's, the parcels present and the deposited solids' error.
 """
 import argparse
 import math
@@ -31,9 +34,12 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
+import validationRecord as record  # noqa: E402 (tutorials/lib)
 
 
 GAS, CLOUD = "air", "kinematicCloud"
+# MFiX-PIC, seed 2 Table 2: the largest absolute volume error (box 1 m3)
+MFIX_ERROR = 1.67e-15
 
 
 def field_values(path):
@@ -80,6 +86,8 @@ def main():
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--limit", type=float, default=1e-14)
     parser.add_argument("--plot", action="store_true")
+    parser.add_argument("--record", metavar="FILE",
+                        help="write the validation matrix's record (JSON)")
     args = parser.parse_args()
 
     volumes, _ = field_values(os.path.join(args.case, "0", "V"))
@@ -130,6 +138,8 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(args.case, "depositionConservation_%s.png"
                                  % args.label), dpi=100)
+    if args.record:
+        write_record(args, rows, nStart)
 
     if args.check:
         worst = max((r[2]["error"] for r in rows), default=float("inf"))
@@ -140,6 +150,57 @@ def main():
                                            len(rows), args.limit, nStart))
         return 0 if ok else 1
     return 0
+
+
+def settings(case):
+    """What the run used, from its constant/kinematicCloudProperties and
+    system/controlDict."""
+    path = os.path.join(case, "constant", "kinematicCloudProperties")
+    text = post.read_text(path)
+    method = post.dict_entry(path, "averagingMethod")
+    coeffs = re.search(r"^\s*%sCoeffs\s*\{([^}]*)\}" % method, text, re.M)
+    if coeffs:
+        method += " (%s)" % "; ".join(
+            " ".join(line.split("//")[0].split()).rstrip(";")
+            for line in coeffs.group(1).splitlines()
+            if line.split("//")[0].strip())
+    forces = re.search(r"particleForces\s*\{\s*(\w+)", text)
+    gas = os.path.join(case, "constant", "prescribedGasFlowProperties")
+    return ("averagingMethod %s; solidsFractionFrom %s; packingModel %s; "
+            "drag %s (C %s 1/s); gas prescribed (%s, period %s s), not "
+            "solved; deltaT %s s, maxCo %s" % (
+                method, post.dict_entry(path, "solidsFractionFrom") or "cell",
+                post.dict_entry(path, "packingModel"),
+                forces.group(1) if forces else "none",
+                post.dict_entry(path, "C"), post.dict_entry(gas, "type"),
+                post.dict_entry(gas, "period"),
+                post.control_entry(case, "deltaT"),
+                post.dict_entry(path, "maxCo")))
+
+
+def write_record(args, rows, nStart):
+    """The validation matrix's record (--record FILE)."""
+    errors = [r[2]["error"] for r in rows]
+    method = post.dict_entry(os.path.join(
+        args.case, "constant", "kinematicCloudProperties"), "averagingMethod")
+    label = "" if method == args.label else \
+        "; run with averagingMethod %s, --label %s" % (method, args.label)
+    out = [
+        record.row("largest volume error |gas + parcels - box|/box over %d "
+                   "periods" % len(rows), max(errors) if errors else None,
+                   peer=MFIX_ERROR, goal=record.at_most(args.limit),
+                   note="MFiX-PIC: seed 2 Table 2" + label),
+        record.row("parcels present at every period (fewest)",
+                   min((r[2]["nParcels"] for r in rows), default=None),
+                   goal=record.at_least(nStart), note="%d seeded" % nStart),
+        record.row("largest |deposited - parcel solids|/parcel solids",
+                   max((r[2]["solidsError"] for r in rows), default=None),
+                   note="for information"),
+    ]
+    record.write(args.record, "depositionConservation", out,
+                 plots=["depositionConservation_%s.png" % args.label]
+                 if args.plot and rows else [],
+                 settings=settings(args.case))
 
 
 if __name__ == "__main__":

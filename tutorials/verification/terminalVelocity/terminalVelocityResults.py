@@ -9,6 +9,7 @@ RK4 with a step of 1e-5 s. The terminal velocity is
     v_t = v_g - sqrt(4/3*g*d*(rho_p - rho_g)/(rho_g*Cd)).
 
 Usage: terminalVelocityResults.py [--case DIR] [--check] [--plot]
+                                  [--record FILE]
 Reads the parcel's position and velocity from every time directory
 (lagrangian/kinematicCloud/positions and U) and prints, against RK4:
   - the error in the terminal velocity: v at the last time (t = 0.3 s),
@@ -19,7 +20,9 @@ Reads the parcel's position and velocity from every time directory
     to itself (large at the first times: the parcel is injected during
     the first step and so lags by about one step, 1e-4 s).
 With --check it exits 1 when either of the first two exceeds 0.5 %; with
---plot it writes terminalVelocity.png.
+--plot it writes terminalVelocity.png. With --record FILE it writes the
+validation matrix's record of the case (tutorials/lib/validationRecord.py):
+the terminal velocity against RK4's and the y(t) error, each goal 0.5 %.
 """
 import argparse
 import math
@@ -32,6 +35,7 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
+import validationRecord as record  # noqa: E402 (tutorials/lib)
 
 g, rhop, rhog, d, Cd, vg = 9.81, 2000.0, 1.2, 1e-4, 1.0, 0.4
 
@@ -67,11 +71,47 @@ def parcel(case, time):
     return y, v
 
 
+def settings(case):
+    """What the run used, from its constant/kinematicCloudProperties and
+    system/controlDict."""
+    path = os.path.join(case, "constant", "kinematicCloudProperties")
+    forces = re.search(r"particleForces\s*\{\s*(\w+)", post.read_text(path))
+    return ("packingModel %s; drag %s (Cd %s, feedback %s); averagingMethod "
+            "%s; gas velocity interpolation %s; deltaT %s s, maxCo %s" % (
+                post.dict_entry(path, "packingModel"),
+                forces.group(1) if forces else "none",
+                post.dict_entry(path, "Cd"), post.dict_entry(path, "feedback"),
+                post.dict_entry(path, "averagingMethod"),
+                post.dict_entry(path, "U.air"),
+                post.control_entry(case, "deltaT"),
+                post.dict_entry(path, "maxCo")))
+
+
+def write_record(args, times, sim, ref, vt, y_err):
+    """The validation matrix's record (--record FILE)."""
+    rows = [
+        record.row("terminal velocity at t = %g s [m/s]" % times[-1][0],
+                   sim[-1][1], reference=ref[-1][1],
+                   reference_source="RK4 of eq 1",
+                   goal=record.within(0.005),
+                   note="analytical v_t %.4f m/s, RK4 at %.1f %% of it"
+                   % (vt, 100*ref[-1][1]/vt)),
+        record.row("largest relative y(t) error over %d output times"
+                   % len(times), y_err, goal=record.at_most(0.005),
+                   note="|y - y_RK4|/y_RK4 as a fraction"),
+    ]
+    record.write(args.record, "terminalVelocity", rows,
+                 plots=["terminalVelocity.png"] if args.plot else [],
+                 settings=settings(args.case))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--case", default=".")
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--plot", action="store_true")
+    parser.add_argument("--record", metavar="FILE",
+                        help="write the validation matrix's record (JSON)")
     args = parser.parse_args()
 
     h0 = float(re.search(r"\(\s*\(\s*\S+\s+(\S+)\s+\S+\s*\)",
@@ -120,6 +160,9 @@ def main():
         fig.suptitle("Terminal velocity, Cd = 1, gas 0.4 m/s up")
         fig.tight_layout()
         fig.savefig(os.path.join(args.case, "terminalVelocity.png"), dpi=100)
+
+    if args.record:
+        write_record(args, times, sim, ref, vt, y_err)
 
     if args.check and max(end_err, y_err) > 0.005:
         return 1

@@ -9,7 +9,7 @@ start, next to MFiX-PIC's Table 1 (copied below from the shared reference
 vortex_advection_mfix.csv).
 
 Usage: vortexAdvectionResults.py [--case DIR] [--period T] [--check]
-                                 [--limit L] [--plot]
+                                 [--limit L] [--plot] [--record FILE]
 Start positions: constant/kinematicCloudPositions, parcel i there is the
 parcel with origId i (manualInjection injects them in that order).
 Positions at time t: <t>/lagrangian/kinematicCloud/positions (ascii,
@@ -20,7 +20,10 @@ parcels that needed it is printed.
 With --check it exits 1 unless every parcel is present at every period
 and the largest L1 at the last period is below --limit (default 5e-3 m);
 with --plot it writes vortexAdvection.png (L1 against period, ours and
-MFiX-PIC; the parcels at 0, T/2 and T of the last period when written).
+MFiX-PIC; the parcels at 0, T/2 and T of the last period when written);
+with --record FILE it writes the validation matrix's record of the case
+(tutorials/lib/validationRecord.py): the largest L1 at period 16 (goal
+5e-3 m) and 8 against MFiX-PIC's, and the parcels present.
 """
 import argparse
 import os
@@ -32,6 +35,7 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
+import validationRecord as record  # noqa: E402 (tutorials/lib)
 
 
 # MFiX-PIC, Table 1 of seed 2 (= /work/shared/reference/vortex_advection_mfix.csv)
@@ -104,16 +108,19 @@ def main():
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--limit", type=float, default=5e-3)
     parser.add_argument("--plot", action="store_true")
+    parser.add_argument("--record", metavar="FILE",
+                        help="write the validation matrix's record (JSON)")
     args = parser.parse_args()
 
     start = read_points(post.read_text(os.path.join(
         args.case, "constant", "kinematicCloudPositions")))
-    rows, complete = [], True
+    rows, complete, fewest = [], True, len(start)
     for t, name in times(args.case):
         k = round(t/args.period)
         if abs(t - k*args.period) > 1e-9 or k < 1:
             continue
         now = parcels(args.case, name)
+        fewest = min(fewest, len(now))
         complete &= len(now) == len(start)
         if len(now) != len(start):
             print("t = %s: %d parcels of %d" % (name, len(now), len(start)))
@@ -131,6 +138,8 @@ def main():
 
     if args.plot and rows:
         plot(args, start, rows)
+    if args.record:
+        write_record(args, start, rows, fewest)
 
     if args.check:
         ok = complete and rows and rows[-1][2] < args.limit
@@ -141,6 +150,46 @@ def main():
                                        args.limit, len(start), complete))
         return 0 if ok else 1
     return 0
+
+
+def settings(case):
+    """What the run used, from its constant/ and system/ dictionaries."""
+    path = os.path.join(case, "constant", "kinematicCloudProperties")
+    forces = re.search(r"particleForces\s*\{\s*(\w+)", post.read_text(path))
+    gas = os.path.join(case, "constant", "prescribedGasFlowProperties")
+    return ("packingModel %s; drag %s (C %s 1/s); gas prescribed (%s, period "
+            "%s s), not solved; averagingMethod %s; gas velocity "
+            "interpolation %s; deltaT %s s, maxCo %s" % (
+                post.dict_entry(path, "packingModel"),
+                forces.group(1) if forces else "none",
+                post.dict_entry(path, "C"), post.dict_entry(gas, "type"),
+                post.dict_entry(gas, "period"),
+                post.dict_entry(path, "averagingMethod"),
+                post.dict_entry(path, "U.air"),
+                post.control_entry(case, "deltaT"),
+                post.dict_entry(path, "maxCo")))
+
+
+def write_record(args, start, rows, fewest):
+    """The validation matrix's record (--record FILE): the largest L1 at
+    Table 1's last period (16) with the goal --limit, at its middle (8)
+    for information, and the fewest parcels at a period."""
+    l1 = {r[0]: r[2] for r in rows}
+    last = len(MFIX_L1)
+    out = []
+    for k, goal in ((last, record.at_most(args.limit)), (last//2, None)):
+        out.append(record.row(
+            "largest L1 displacement at period %d (t = %g s) [m]"
+            % (k, k*args.period), l1.get(k), peer=MFIX_L1[k - 1], goal=goal,
+            note="MFiX-PIC: seed 2 Table 1" + (
+                "" if k in l1 else "; period not written or parcels "
+                "missing")))
+    out.append(record.row("parcels present at every period (fewest)",
+                          fewest, goal=record.at_least(len(start)),
+                          note="%d seeded" % len(start)))
+    record.write(args.record, "vortexAdvection", out,
+                 plots=["vortexAdvection.png"] if args.plot and rows else [],
+                 settings=settings(args.case))
 
 
 def plot(args, start, rows):

@@ -2,7 +2,8 @@
 """Wet-bulb evaporation (seed 2 section 2.4): the droplet's steady
 temperature against seed 2's Table 5 (Mills 1999).
 
-Usage: wetBulbResults.py [--check TOL] [--plot PREFIX] RUN [RUN ...]
+Usage: wetBulbResults.py [--check TOL] [--plot PREFIX] [--table FILE]
+                         [--record FILE] RUN [RUN ...]
 Each RUN is a case directory run by ./Allrun -humidity N. From its
 log.mppicReactingPimpleFoam the droplet temperature after every step (the
 cloud's "Temperature min/max", one parcel) and the droplet mass; the
@@ -14,7 +15,9 @@ and writes the same as wetBulbTable.md in the current directory.
 With --check TOL exits 1 when any |ours - Mills| exceeds TOL kelvin;
 with --plot PREFIX writes PREFIX_history.png (temperature against time,
 one curve per humidity) and PREFIX_curve.png (steady temperature against
-humidity, ours on Table 5's curve).
+humidity, ours on Table 5's curve); with --record FILE writes the
+validation matrix's record (tutorials/lib/validationRecord.py): per
+humidity the droplet temperature against Table 5, within 0.3 K.
 """
 import argparse
 import os
@@ -26,8 +29,11 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
+import validationRecord as record  # noqa: E402 (tutorials/lib)
 
 KELVIN = 273.15
+WINDOW = 0.5    # s: the steady temperature, the mean over the run's last
+GOAL = 0.3      # K: the record's goal for |ours - Mills| (README)
 
 
 def history(case):
@@ -75,7 +81,7 @@ def summary(case):
     tEnd, TEnd, mEnd = hist[-1]
     mills = table5(case)[humidity(case)]
     ours = post.window_mean([(t, T) for t, T, _ in hist],
-                            tEnd - 0.5, tEnd)[0] - KELVIN
+                            tEnd - WINDOW, tEnd)[0] - KELVIN
     return {
         "case": case,
         "humidity": humidity(case),
@@ -149,18 +155,59 @@ def plot(rows, prefix):
     plt.close(fig)
 
 
+def settings(case):
+    """What the runs used, from one run's constant/reactingCloudProperties
+    and system/controlDict."""
+    path = os.path.join(case, "constant", "reactingCloudProperties")
+    forces = re.search(r"particleForces\s*\{\s*(\w+)", post.read_text(path))
+    return ("packingModel %s (closePackFraction %s); particle forces %s; "
+            "heatTransferModel %s; phaseChangeModel %s; averagingMethod %s; "
+            "solidsFractionFrom %s; deltaT %s s; %s simulated s per humidity"
+            % (post.dict_entry(path, "packingModel"),
+               post.dict_entry(path, "closePackFraction"),
+               forces.group(1) if forces else "none",
+               post.dict_entry(path, "heatTransferModel"),
+               post.dict_entry(path, "phaseChangeModel"),
+               post.dict_entry(path, "averagingMethod"),
+               post.dict_entry(path, "solidsFractionFrom") or "cell",
+               post.control_entry(case, "deltaT"),
+               post.control_entry(case, "endTime")))
+
+
+def write_record(args, rows):
+    """The validation matrix's record (--record FILE): one row per humidity,
+    the plots of --plot named from the current folder."""
+    out = [record.row("droplet temperature at %d %% humidity [C]"
+                      % r["humidity"], r["ours"], reference=r["mills"],
+                      reference_source="Mills, seed 2 Table 5",
+                      goal=record.within(GOAL, absolute=True),
+                      note="change over the last 1 s %+.4f K" % r["drift"])
+           for r in rows]
+    plots = [os.path.relpath(args.plot + end)
+             for end in ("_history.png", "_curve.png")] if args.plot else []
+    ends = sorted(set("%g" % r["tEnd"] for r in rows), key=float)
+    record.write(args.record, "wetBulb", out, plots=plots,
+                 settings=settings(rows[0]["case"]),
+                 window="the mean over the last %g s of each run (ending at "
+                 "t = %s s)" % (WINDOW, ", ".join(ends)))
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("runs", nargs="+")
     parser.add_argument("--check", type=float, default=None)
     parser.add_argument("--plot", default=None)
     parser.add_argument("--table", default="wetBulbTable.md")
+    parser.add_argument("--record", metavar="FILE",
+                        help="write the validation matrix's record (JSON)")
     args = parser.parse_args(argv)
 
     rows = sorted((summary(c) for c in args.runs), key=lambda r: r["humidity"])
     worst = print_table(rows, args.table)
     if args.plot:
         plot(rows, args.plot)
+    if args.record:
+        write_record(args, rows)
     if args.check is not None and not worst <= args.check:
         print("FAIL: |ours - Mills| %.3f K above %.3f K" % (worst, args.check))
         return 1
