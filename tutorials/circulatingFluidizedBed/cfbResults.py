@@ -2,7 +2,7 @@
 """Measurements of the circulating fluidized bed (tutorials/circulatingFluidizedBed).
 
 Usage:
-    cfbResults.py [case] [--from T0] [--to T1] [--plot] [--mesh]
+    cfbResults.py [case] [--from T0] [--to T1] [--plot] [--mesh] [--record FILE]
 
 Reads the case's postProcessing tables and logs and prints, over the window
 [T0, T1] (default: the second half of the run):
@@ -34,6 +34,10 @@ Reads the case's postProcessing tables and logs and prints, over the window
 a cell). --plot draws cfb_history.png, --geometry cfb_geometry.png (the
 patches, pressure taps, collector planes and the initial inventory box). The same numbers come from summary()
 for the regression test.
+--record FILE writes the validation matrix's record of the run (cfbRecord.py:
+case cfb-<N>, N the operating case of constant/operatingConditions; the
+pressure drops and the level against the experiment), and --plot then names
+its plot cfb_case<N>_history.png.
 """
 import argparse
 import glob
@@ -47,6 +51,7 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 or os.path.join(HERE, "..", ".."),
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
+import cfbRecord  # noqa: E402 (beside this file)
 
 RHO_P = 860.0            # HDPE, kg/m3 (constant/kinematicCloudProperties)
 CLOSE_PACK = 0.6
@@ -375,6 +380,8 @@ def main(argv):
     p.add_argument("--mesh", action="store_true")
     p.add_argument("--geometry", action="store_true",
                    help="draw cfb_geometry.png (patches, taps, planes) and stop")
+    p.add_argument("--record", metavar="FILE",
+                   help="write the validation matrix's record to FILE")
     a = p.parse_args(argv)
     if a.geometry:
         import cfbPlots
@@ -385,10 +392,16 @@ def main(argv):
         print_mesh(mesh_figures(a.case))
     r = summary(a.case, a.t0, a.t1)
     print_summary(r)
+    plots = []
     if a.plot:
         import cfbPlots
-        cfbPlots.plot(r, os.path.join(a.case, "cfb_history.png"))
-        print("wrote cfb_history.png")
+        # the matrix's cases share the folder of records: named by the case
+        name = ("cfb_case%d_history.png" % cfbRecord.operating_case(a.case)
+                if a.record else "cfb_history.png")
+        cfbPlots.plot(r, os.path.join(a.case, name))
+        print("wrote " + name)
+        plots.append(name)
+    cfbRecord.write(a.record, r, a.case, plots)
 
 
 if __name__ == "__main__":

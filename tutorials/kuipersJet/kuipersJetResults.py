@@ -4,7 +4,7 @@
 Usage:
     kuipersJetResults.py [--case DIR] [--label NAME] [--plot] [--check]
                          [--tolerance 0.15] [--from T0] [--row] [--wallTime S]
-                         [--against DIR ...]
+                         [--against DIR ...] [--record FILE]
 
 Reads postProcessing/{bedPressureDrop,packingMonitor}/0/*.dat (deltaP, every
 step; parcels, mass, largest cell solids fraction), the profiles sets
@@ -44,6 +44,9 @@ with --plot, every run's profiles in kuipersJet_<label>_profiles.png.
 --check: exit status 1 unless the parcel count and mass stay at their first
 values, the largest cell solids fraction keeps the bound, and the mean deltaP
 is within --tolerance of the bed weight.
+--record FILE: the validation matrix's record of the run (kuipersJetRecord.py:
+deltaP/weight, the profiles' mean |difference| at 3.4 and 6.4 cm, the slab
+measure and the largest cell solids fraction against their goals).
 """
 import glob
 import math
@@ -55,6 +58,7 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 or os.path.join(HERE, "..", ".."),
                                 "tutorials", "lib"))
+import kuipersJetRecord  # noqa: E402 (beside this file)
 import kuipersJetSlabs as slabs  # noqa: E402 (beside this file)
 import mppicPost as post  # noqa: E402 (tutorials/lib)
 from mppicPost import (control_entry, function_object_table,  # noqa: E402
@@ -374,6 +378,8 @@ def main():
     parser.add_argument("--tolerance", type=float, default=0.15)
     parser.add_argument("--from", dest="t0", type=float, default=None)
     parser.add_argument("--against", nargs="+", default=[])
+    parser.add_argument("--record", metavar="FILE",
+                        help="write the validation matrix's record to FILE")
     args = post.parse_results_args(parser, TABLE_HEAD)
     if args.against:
         return compare_runs(args.case, args.against, args.t0, args.plot and args.label)
@@ -383,10 +389,13 @@ def main():
         print(table_row(res, args.label, args.wallTime, args.failure))
     else:
         print_report(res, args.label)
+    plots = []
     if args.plot:
         import kuipersJetPlots
         for name in kuipersJetPlots.plot(res, args.case, args.label):
             print("  wrote " + name)
+            plots.append(os.path.relpath(name, args.case))
+    kuipersJetRecord.write(args.record, res, args.case, plots)
 
     if args.check:
         checks = [

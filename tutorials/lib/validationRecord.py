@@ -12,15 +12,23 @@ A results script builds its rows and writes them:
     record.write(args.record, "settlingShocks-0.10", rows,
                  plots=["settlingShocks.png"], settings="...")
 
-A goal is a (text, test) pair; a row's "met" is test(ours, reference).
+A goal is a (text, test) pair; a row's "met" is test(ours, reference); a
+figure with a goal but no value (not found, nan) is recorded as not met.
+case_settings(case) gives the settings line of a cloud case from its files
+(the packing model and its coefficients, the deposit, the drag, the PIMPLE
+switches that are on, the seeding, the solver and the ranks).
 The run's commit, date, command and wall time come from bin/validate's
 environment (MPPIC_VALIDATE_COMMIT, _DIRTY, _COMMAND, _WALLTIME); a script
 run by hand records its own working tree's commit and "by hand".
 """
 import datetime
 import json
+import math
 import os
+import re
 import subprocess
+
+import mppicPost as post
 
 
 def within(tolerance, absolute=False):
@@ -57,6 +65,13 @@ def row(figure, ours, reference=None, reference_source="", peer=None,
     """One figure: ours against the reference (and the peer's, MFiX-PIC's,
     where it has one) and the goal (within, between, at_most, at_least)."""
     text, test = goal if goal else ("-", None)
+    if ours is not None and isinstance(ours, float) and not math.isfinite(ours):
+        ours = None
+    if reference is not None and isinstance(reference, float) \
+            and not math.isfinite(reference):
+        reference = None
+    if ours is None and test is not None:
+        note = "; ".join(n for n in ("no value", note) if n)
     return {
         "figure": figure,
         "reference": reference,
@@ -64,10 +79,64 @@ def row(figure, ours, reference=None, reference_source="", peer=None,
         "peer": peer,
         "ours": ours,
         "goal": text,
-        "met": None if test is None or ours is None
-        else bool(test(ours, reference)),
+        "met": None if test is None
+        else False if ours is None else bool(test(ours, reference)),
         "note": note,
     }
+
+
+def coeffs_text(path, block):
+    """The entries of a dictionary's sub-dictionary block (the first of that
+    name, nested braces kept), comments dropped, on one line ("" without
+    it)."""
+    text = re.sub(r"//.*", "", post.read_text(path))
+    m = re.search(r"\b%s\s*\{" % re.escape(block), text)
+    if not m:
+        return ""
+    depth, i = 1, m.end()
+    while depth and i < len(text):
+        depth += {"{": 1, "}": -1}.get(text[i], 0)
+        i += 1
+    return " ".join(text[m.end():i - 1].split()).rstrip(";")
+
+
+PIMPLE_SWITCHES = ("faceInterpolatedDrag", "gasVelocityFromFlux",
+                   "balanceImplicitDrag")
+
+
+def case_settings(case, cloud_file="kinematicCloudProperties"):
+    """One line of what a cloud case ran with, read from its files."""
+    cloud = os.path.join(case, "constant", cloud_file)
+    seeds = os.path.join(case, "system", "mppicSeedParcelsDict")
+    fv_solution = os.path.join(case, "system", "fvSolution")
+    model = post.dict_entry(cloud, "packingModel")
+    averaging = post.dict_entry(cloud, "averagingMethod")
+    drag = re.search(r"particleForces\s*\{\s*(\w+)",
+                     re.sub(r"//.*", "", post.read_text(cloud)))
+
+    def with_coeffs(name, block):
+        inner = coeffs_text(cloud, block)
+        return "%s {%s}" % (name, inner) if inner else name
+
+    parts = [
+        with_coeffs(model, model + "Coeffs"),
+        "solidsFractionFrom %s" % (post.dict_entry(cloud, "solidsFractionFrom")
+                                   or "cell"),
+        "averagingMethod " + with_coeffs(averaging, averaging + "Coeffs"),
+        with_coeffs(drag.group(1), drag.group(1)) if drag else "no drag",
+    ]
+    switches = [k for k in PIMPLE_SWITCHES
+                if post.dict_entry(fv_solution, k) in ("true", "on", "yes")]
+    parts.append("PIMPLE " + (", ".join(switches) if switches
+                              else "no switches"))
+    if os.path.exists(seeds):
+        parts.append("seeded at solids fraction %s, %s parcels per cell"
+                     % (post.dict_entry(seeds, "solidsFraction"),
+                        post.dict_entry(seeds, "parcelsPerCell")))
+    ranks = len([d for d in os.listdir(case) if d.startswith("processor")])
+    parts.append("%s, %s" % (post.control_entry(case, "application"),
+                             "%d ranks" % ranks if ranks else "serial"))
+    return "; ".join(parts)
 
 
 def _git(*args):

@@ -26,7 +26,10 @@ Against:
 
 Usage:
     minimumFluidizationResults.py [--case DIR] [--label L] [--plot]
-        [--check] [--row] [--tableHead]
+        [--row] [--tableHead] [--record FILE]
+        --record FILE: the validation matrix's record of the run
+        (tutorials/lib/validationRecord.py; rows in
+        minimumFluidizationRecord.py)
     minimumFluidizationResults.py --overlay CASE:LABEL ... [--out PNG]
         [--title T]   (several runs on one plot: the sensitivity plots)
     minimumFluidizationResults.py --split T0 T1 [--case DIR]
@@ -45,6 +48,8 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
+import validationRecord as record  # noqa: E402 (tutorials/lib)
+import minimumFluidizationRecord  # noqa: E402 (beside this script)
 
 MEASURED_UMF = 0.182
 G = 9.81
@@ -296,6 +301,9 @@ def main():
     parser.add_argument("--out", default="minimumFluidization_overlay.png")
     parser.add_argument("--title", default="minimum fluidization")
     parser.add_argument("--split", nargs=2, type=float, metavar=("T0", "T1"))
+    parser.add_argument("--record", metavar="FILE",
+                        help="write the validation matrix's record of the "
+                        "run (tutorials/lib/validationRecord.py)")
     args = parser.parse_args()
     if args.split:
         split = weight_split(args.case, *args.split)
@@ -330,6 +338,13 @@ def main():
         report(res, args.label)
     if args.plot:
         plot(res, args.case, args.label)
+    if args.record:
+        record.write(args.record, "minimumFluidization",
+                     minimumFluidizationRecord.rows(res, MEASURED_UMF),
+                     plots=["minimumFluidization_%s.png" % args.label]
+                     if args.plot else [],
+                     settings=minimumFluidizationRecord.settings(args.case,
+                                                                 res))
     return 0
 
 

@@ -26,7 +26,12 @@ within 0.05 m of the bottom.
 
 Usage:
     rayleighTaylorResults.py [--case DIR] [--label L] [--plot] [--row]
-        [--tableHead]
+        [--tableHead] [--record FILE]
+--plot writes rayleighTaylor_<label>.png (without --label:
+rayleighTaylor_rho<particle density>.png). --record FILE writes the
+validation matrix's record of the run (tutorials/lib/validationRecord.py,
+case rayleighTaylor-<particle density>): alpha against the band 0.05-0.07
+and the Atwood number.
 """
 import os
 import re
@@ -37,6 +42,7 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
+import validationRecord as record  # noqa: E402 (tutorials/lib)
 
 Y0 = 0.3
 EPS0 = 0.2
@@ -133,9 +139,32 @@ def plot(res, case, label):
     print("  wrote " + path)
 
 
+def record_rows(res):
+    """The record's rows: alpha against the literature's band, and the
+    Atwood number."""
+    fit = ("fit over %g-%g s" % res["range"] if "range" in res
+           else "no self-similar range (h >= 4 cells before the spike front "
+           "nears the bottom)")
+    return [
+        record.row("growth coefficient alpha of h = alpha A g t^2",
+                   res.get("alpha"),
+                   reference_source="Youngs; Snider & Andrews (seed 2 §3.1)",
+                   goal=record.between(0.05, 0.07),
+                   note="%s; no single reference value, the literature's "
+                   "band is the goal; seed 2 Fig. 8 draws alpha = 0.07 beside "
+                   "MFiX-PIC, which gives no number" % fit),
+        record.row("Atwood number A of the mixture", res["A"],
+                   note="informational: (rho_mix - rho_g)/(rho_mix + rho_g), "
+                   "rho_mix = %g rho_g + %g rho_p, rho_p %g kg/m3"
+                   % (1 - EPS0, EPS0, res["rho_p"]))]
+
+
 def main():
     parser = post.results_parser("run", __doc__.split("\n")[0])
     parser.add_argument("--plot", action="store_true")
+    parser.add_argument("--record", metavar="FILE",
+                        help="write the validation matrix's record of the "
+                        "run (tutorials/lib/validationRecord.py)")
     args = post.parse_results_args(parser, TABLE_HEAD)
     res = summary(args.case)
     if args.row:
@@ -158,8 +187,25 @@ def main():
                                                 res["alpha"]))
         else:
             print("  no self-similar range yet")
+    label = args.label
+    if label == parser.get_default("label"):
+        label = "rho%g" % res["rho_p"]
     if args.plot:
-        plot(res, args.case, args.label)
+        plot(res, args.case, label)
+    if args.record:
+        # the seeded box spans the mesh's depth (Allrun)
+        seeds = post.read_text(os.path.join(args.case, "system",
+                                            "mppicSeedParcelsDict"))
+        depth = float(re.search(r"^box\s.*\(\s*\S+\s+\S+\s+(\S+)\s*\);",
+                                seeds, re.M).group(1))
+        record.write(
+            args.record, "rayleighTaylor-%g" % res["rho_p"], record_rows(res),
+            plots=["rayleighTaylor_%s.png" % label] if args.plot else [],
+            settings="%s; particle density %g kg/m3, cells %g m, %s" % (
+                record.case_settings(args.case), res["rho_p"], res["cell"],
+                "a slice one cell deep" if abs(depth - res["cell"]) < 1e-9
+                else "depth %g m" % depth),
+            window="fit %g-%g s" % res["range"] if "range" in res else "")
     return 0
 
 

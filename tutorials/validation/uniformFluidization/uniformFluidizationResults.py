@@ -37,10 +37,17 @@ and prints, over t0 <= t <= end (default t0: 0.4 x end, after the start-up):
 Usage:
     uniformFluidizationResults.py [--case DIR] [--from T0] [--label L]
         [--row [--wallTime S] [--failure TEXT]] [--tableHead] [--rows]
-        [--plot]
+        [--plot] [--record FILE]
     --row   one markdown table row (TABLE_HEAD; bin/compareSolvers)
     --plot  uniformFluidization_<label>_pressureDrop.png: deltaP/weight(t);
             with --rows also uniformFluidization_<label>_rows.png
+    --record FILE  the validation matrix's record (tutorials/lib/
+            validationRecord.py) of case uniformBed-<N>, N the parcels per
+            packed cell of system/mppicSeedParcelsDict: deltaP/weight
+            against 1.00 +- 0.02 (MFiX-PIC's 1.075 beside it), its standard
+            error, the largest cell solids fraction against max(1.03
+            alpha_cp, alpha_cp + one parcel); with the default --label the
+            plots are named by the count (label perCell<N>)
     uniformFluidizationResults.py --largest DIR:LABEL [DIR:LABEL ...]
         uniformFluidization_largestSolidsFraction.png: the largest
         solids fraction of the model's field at every step of each run,
@@ -59,6 +66,12 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
+import validationRecord as record  # noqa: E402 (tutorials/lib)
+
+# MFiX-PIC 21.3.2 on this bed, mean deltaP/weight over 1-4 s: the project's
+# shared reference/mfix_pic_uniform_bed.csv, deltaP_over_weight_mean (no copy
+# of it in this folder)
+MFIX_PIC_RATIO = 1.075
 
 TABLE_HEAD = ("| run | window [s] | deltaP / weight | std | std error of mean "
               "| packing force / weight | max cell eps_s | wall s / sim s "
@@ -240,6 +253,52 @@ def plot_largest(runs, bound=0.69):
     print("wrote", path)
 
 
+def run_settings(case):
+    """What the run used, from its files: (packing model, close pack, parcels
+    per packed cell, one parcel's share of a cell, the settings' text)."""
+    cloud = os.path.join(case, "constant", "kinematicCloudProperties")
+    seeds = os.path.join(case, "system", "mppicSeedParcelsDict")
+    model = post.dict_entry(cloud, "packingModel")
+    found = re.search(r"\b(?:closePackFraction|alphaPacked)\s+([-0-9.eE+]+)",
+                      record.coeffs_text(cloud, model + "Coeffs"))
+    close_pack = float(found.group(1)) if found else float("nan")
+    per_cell = int(post.dict_number(seeds, "parcelsPerCell"))
+    # arrangement cell: parcelsPerCell equal parcels in each (equal) cell at
+    # solidsFraction, so one parcel is solidsFraction/parcelsPerCell of a cell
+    parcel = post.dict_number(seeds, "solidsFraction")/per_cell
+    text = "%s; seeding jitter %s" % (record.case_settings(case),
+                                      post.dict_entry(seeds, "jitter"))
+    return model, close_pack, per_cell, parcel, text
+
+
+def write_record(path, res, case, plots):
+    """The validation matrix's record of the run (validationRecord)."""
+    _, close_pack, per_cell, parcel, settings = run_settings(case)
+    bound = max(1.03*close_pack, close_pack + parcel)
+    rows = [
+        record.row("(deltaP - gas head)/weight", res["ratio"], reference=1.0,
+                   reference_source="the bed's weight (the gas carries it)",
+                   peer=MFIX_PIC_RATIO, goal=record.within(0.02, absolute=True),
+                   note="MFiX-PIC 21.3.2 on this bed over 1-4 s "
+                   "(reference/mfix_pic_uniform_bed.csv); std %.3f"
+                   % res["std"]),
+        record.row("standard error of the mean deltaP/weight",
+                   res["error"] if math.isfinite(res["error"]) else None,
+                   note="from the means of 0.25 s blocks (none: a window of "
+                   "fewer than two blocks)"),
+        record.row("largest cell solids fraction", res["maxCell"],
+                   reference=round(bound, 4),
+                   reference_source="max(1.03 x %g, %g + one parcel %.4f)"
+                   % (close_pack, close_pack, parcel),
+                   goal=record.at_most(bound + 1e-12),
+                   note="over the window; the model's field at most %.4f at "
+                   "every step" % res["maxField"]),
+    ]
+    record.write(path, "uniformBed-%d" % per_cell, rows, plots=plots,
+                 settings=settings,
+                 window="%g-%g s" % (res["t0"], res["t1"]))
+
+
 def main():
     parser = post.results_parser("run", __doc__.split("\n")[0])
     parser.add_argument("--from", dest="t0", type=float, default=None,
@@ -247,7 +306,12 @@ def main():
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--rows", action="store_true")
     parser.add_argument("--largest", nargs="+", metavar="DIR:LABEL")
+    parser.add_argument("--record", metavar="FILE",
+                        help="write the validation matrix's record of the run "
+                        "(case uniformBed-<parcels per packed cell>) to FILE")
     args = parser.parse_args()
+    if args.record and args.label == parser.get_default("label"):
+        args.label = "perCell%d" % run_settings(args.case)[2]
     if args.largest:
         plot_largest(args.largest)
         return 0
@@ -289,10 +353,15 @@ def main():
         for i, (h, alpha, full, force, gas) in enumerate(bed_rows(profile)):
             print("%3d %8.1f %12.3f %14.2f %+18.4f %14.3f"
                   % (i, 1e3*h, alpha, full, force, gas))
+    plots = []
     if args.plot:
         plot(res, args.case, args.label)
+        plots.append("uniformFluidization_%s_pressureDrop.png" % args.label)
         if profile:
             plot_rows(profile, args.case, args.label, (res["t0"], res["t1"]))
+            plots.append("uniformFluidization_%s_rows.png" % args.label)
+    if args.record:
+        write_record(args.record, res, args.case, plots)
     return 0
 
 

@@ -3,6 +3,7 @@
 
 Usage:
     sedimentationResults.py [--case DIR] [--label NAME] [--check] [--plot]
+                            [--record FILE]
     sedimentationResults.py --tableHead
     sedimentationResults.py [--case DIR] --row [--label NAME] [--wallTime S]
                             [--failure TEXT]     (bin/compareSolvers)
@@ -30,6 +31,8 @@ and the bounds of the verification:
   - final bed height within 3 % of H.
 With --check the exit status is 1 when a bound is not met. With --plot it
 writes sedimentation_<label>.png (max alpha_s against time, final profile).
+With --record FILE it writes the validation matrix's record of the run
+(tutorials/lib/validationRecord.py, case sedimentation): the three bounds.
 """
 import math
 import os
@@ -41,6 +44,7 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
+import validationRecord as record  # noqa: E402 (tutorials/lib)
 
 
 def read_monitor(case):
@@ -124,12 +128,34 @@ def table_row(res, label, wall, failure):
         "%.0f" % wall if wall else "-", failure or "no")
 
 
+def record_rows(res):
+    """The record's rows: the bounds of the verification (module doc)."""
+    return [
+        record.row("largest solids fraction, every step", res["max_avg"],
+                   reference=res["close_pack"],
+                   reference_source="close pack (packingMonitor)",
+                   goal=record.at_most(res["bound"] + 1e-12),
+                   note="the model's averaging; bound max(1.03 alpha_cp, "
+                   "alpha_cp + one parcel = %.4f of a cell); cell field "
+                   "at most %.4f" % (res["parcel_fraction"], res["max_cell"])),
+        record.row("smallest gas fraction, every step", res["min_gas"],
+                   goal=record.at_least(0)),
+        record.row("bed height at %s s [m]" % res["time"], res["height"],
+                   reference=res["expected"],
+                   reference_source="inventory height V_solids/(alpha_cp A)",
+                   goal=record.within(0.03),
+                   note="where the row mean falls through alpha_cp/2")]
+
+
 def main():
     parser = post.results_parser("coloringFunction")
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--width", type=float, default=0.05)
     parser.add_argument("--depth", type=float, default=0.005)
+    parser.add_argument("--record", metavar="FILE",
+                        help="write the validation matrix's record of the "
+                        "run (tutorials/lib/validationRecord.py)")
     args = post.parse_results_args(parser, TABLE_HEAD)
 
     res = summary(args.case, args.width, args.depth)
@@ -179,6 +205,10 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(args.case, "sedimentation_%s.png" % args.label),
                     dpi=100)
+    if args.record:
+        record.write(args.record, "sedimentation", record_rows(res),
+                     plots=["sedimentation_%s.png" % args.label]
+                     if args.plot else [], settings=record.case_settings(args.case))
 
     if args.check and not all(ok.values()):
         return 1

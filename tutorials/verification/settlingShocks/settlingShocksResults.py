@@ -3,7 +3,7 @@
 
 Usage:
     settlingShocksResults.py [--case DIR] [--time T] [--tolerance M]
-                             [--check] [--plot]
+                             [--check] [--plot] [--record FILE]
 
 Reads <time>/alpha.kinematicCloud (cell solids fraction), 0/C (cell
 centres) and system/mppicSeedParcelsDict (initial solids fraction, top of
@@ -39,6 +39,10 @@ Prints the table row; --check: exit 1 unless both fronts are within the
 tolerance of the reference: --reference exact (default: settling from the start,
 filling with the bed at rest, tolerance 0.005 m by default) or seed (eqs 6
 and 8, tolerance 0.010 m by default); --plot: settlingShocks_<es0>.png.
+--record FILE: the validation matrix's record (tutorials/lib/
+validationRecord.py, case settlingShocks-<es0>): both fronts against the
+exact solutions, within 0.010 m, with MFiX-PIC's (at 1 s), and the largest
+layer solids fraction.
 """
 import math
 import os
@@ -50,6 +54,7 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
+import validationRecord as record  # noqa: E402 (tutorials/lib)
 
 G = 9.81
 RHO_P, RHO_G, D_P, MU = 2000.0, 1000.0, 1e-3, 1e-3
@@ -144,6 +149,38 @@ def table_rows(res, label, wall, failure):
     return "\n".join(rows)
 
 
+def record_rows(res, time):
+    """The record's rows: the fronts against the exact solutions (settling
+    from the parcels' start, filling with the bed at rest), MFiX-PIC's at
+    1 s, and the largest layer solids fraction."""
+    refs = res["refs"]
+    at_one = abs(float(time) - 1) < 1e-9
+
+    def value(x):
+        return None if x is None or math.isnan(x) else x
+    rows = []
+    for i, (name, ours, exact, seed, what) in enumerate((
+            ("settling", res["settling"], refs[3], refs[0],
+             "settling from the parcels' start, %s"
+             % ("at %+.4f m/s" % res["v0"] if res["v0"] else "at rest")),
+            ("filling", res["filling"], refs[2], refs[1],
+             "filling with the bed at rest"))):
+        rows.append(record.row(
+            "%s front at %s s [m]" % (name, time), value(ours),
+            reference=exact,
+            reference_source="exact: %s (settlingShocksResults.py)" % what,
+            peer=value(res["mfix"][i]) if at_one else None,
+            goal=record.within(0.010, absolute=True),
+            note="seed 2 eq %s: %.4f m; MFiX-PIC: seed 2 Tables 3-4%s"
+            % ("6" if i == 0 else "8", seed,
+               "" if at_one else ", at 1 s only")))
+    rows.append(record.row(
+        "largest layer solids fraction", max(res["profile"]),
+        reference=CLOSE_PACK, reference_source="close pack",
+        note="informational (layer means of alpha.kinematicCloud)"))
+    return rows
+
+
 def plot(ys, profile, es0, fronts, refs, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -186,6 +223,9 @@ def main():
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--hindered-velocity", type=float, metavar="ES0")
+    parser.add_argument("--record", metavar="FILE",
+                        help="write the validation matrix's record of the "
+                        "run (tutorials/lib/validationRecord.py)")
     args = post.parse_results_args(parser, TABLE_HEAD)
     if args.hindered_velocity is not None:
         es0 = args.hindered_velocity
@@ -217,10 +257,18 @@ def main():
     print("max layer solids fraction %.4f (close pack %.2f)"
           % (max(profile), CLOSE_PACK))
 
+    png = "settlingShocks_%.2f.png" % es0
     if args.plot:
-        path = os.path.join(args.case, "settlingShocks_%.2f.png" % es0)
+        path = os.path.join(args.case, png)
         plot(ys, profile, round(es0, 2), (settling, filling), refs, path)
         print("wrote " + path)
+    if args.record:
+        record.write(args.record, "settlingShocks-%.2f" % es0,
+                     record_rows(res, args.time),
+                     plots=[png] if args.plot else [],
+                     settings="%s; parcels start %s" % (
+                         record.case_settings(args.case), "at %+.4f m/s" % res["v0"]
+                         if res["v0"] else "at rest"))
 
     ok = True
     if args.check:
