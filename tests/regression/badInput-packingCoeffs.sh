@@ -1,10 +1,10 @@
 #!/bin/bash
 # badInput-packingCoeffs <runDir>: coloringFunction with e1 = 1.5, then
 # with impulse sideways -> FatalIOError naming the keyword and the allowed
-# range or names; coloringFunction with randomVelocity 0.2 -> FatalIOError
-# naming it, 0.2 and [0, 0.1]; coloringFunction and mfixSnider with overfill 1.5 ->
-# FatalIOError naming overfill, 1.5 and [0, 1]; coloringFunction with
-# pushThrough sometimes -> FatalIOError naming pushThrough and sometimes;
+# range or names; coloringFunction with randomVelocity 0 and both models
+# with overfill 0.5 (removed keywords) -> FatalIOError naming the unknown
+# keyword; coloringFunction with pushThrough sometimes -> FatalIOError
+# naming pushThrough and sometimes;
 # coloringFunction with packAtClosePack sometimes -> the same for it;
 # coloringFunction and mfixSnider with followDrainingPacks true but
 # holdSupportedPacks false -> FatalIOError naming followDrainingPacks, true
@@ -38,9 +38,9 @@ status=$?
 
 setEntry "$runDir/case" constant/kinematicCloudProperties \
     subModels/coloringFunctionCoeffs \
-    "{ closePackFraction 0.6; randomVelocity 0.2; }"
+    "{ closePackFraction 0.6; randomVelocity 0; }"
 runBroken "$runDir/case" mppicPimpleFoam
-check fatal "$runDir/case/log.broken" $rc "randomVelocity" "0.2" "[0, 0.1]" \
+check fatal "$runDir/case/log.broken" $rc "unknown keyword randomVelocity" \
     || status=1
 
 # Both models with the given entries stop naming the given words:
@@ -65,8 +65,8 @@ brokenInBoth()
 brokenInBoth "pushThru true;" "unknown keyword pushThru" "pushThrough" \
     "closePackFraction"
 
-# overfill outside [0, 1] (CapacityLimit)
-brokenInBoth "overfill 1.5;" "overfill" "1.5" "[0, 1]"
+# overfill, removed (fixed at 0.5: cellRoom), is unknown
+brokenInBoth "overfill 0.5;" "unknown keyword overfill"
 
 # pushThrough not a switch (read by CapacityLimit)
 setEntry "$runDir/case" constant/kinematicCloudProperties \

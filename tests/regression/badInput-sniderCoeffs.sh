@@ -1,14 +1,13 @@
 #!/bin/bash
 # badInput-sniderCoeffs <runDir>: mfixSnider with pSolid -1, gamma -1,
-# slipVelocityFactor 1.5, capFactor 0.5, collisionDamping maybe,
-# meanFreePathCap perhaps, restWhereConverging sometimes, capacityLimit
-# often, holdSupportedPacks rarely, pushThrough sometimes, pushThrough
-# true with capacityLimit false, releaseAbove 0.6 and 1.2 (outside
-# (closePackFraction, 1]), supportAngle 100, supportPatches
-# (nowhere), conserveMomentum perhaps and a misspelt
-# keyword (colisionDamping) -> FatalIOError naming the
-# keyword and the value (or the allowed range or keywords), exit status 1,
-# no crash (mppicPimpleFoam).
+# slipVelocityFactor 1.5, collisionDamping maybe, capacityLimit often,
+# holdSupportedPacks rarely, pushThrough sometimes, pushThrough true with
+# capacityLimit false, releaseAbove 0.6 and 1.2 (outside
+# (closePackFraction, 1]), supportAngle 100, supportPatches (nowhere),
+# conserveMomentum perhaps, a misspelt keyword (colisionDamping) and a
+# removed one (capFactor 1.15) -> FatalIOError naming the keyword and the
+# value (or the allowed range or keywords; unknown keyword capFactor),
+# exit status 1, no crash (mppicPimpleFoam).
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
 prepareCase "$runDir/case"
@@ -29,10 +28,8 @@ tryCoeffs()
 tryCoeffs "pSolid -1;" "pSolid" "-1" "[0,"
 tryCoeffs "gamma -1;" "gamma" "-1" "[0,"
 tryCoeffs "slipVelocityFactor 1.5;" "slipVelocityFactor" "1.5" "[0, 1]"
-tryCoeffs "capFactor 0.5;" "capFactor" "0.5" "[1,"
+tryCoeffs "capFactor 1.15;" "unknown keyword capFactor"
 tryCoeffs "collisionDamping maybe;" "collisionDamping" "maybe"
-tryCoeffs "meanFreePathCap perhaps;" "meanFreePathCap" "perhaps"
-tryCoeffs "restWhereConverging sometimes;" "restWhereConverging" "sometimes"
 tryCoeffs "capacityLimit often;" "capacityLimit" "often"
 tryCoeffs "holdSupportedPacks rarely;" "holdSupportedPacks" "rarely"
 tryCoeffs "supportAngle 100;" "supportAngle" "100" "(0, 90]"

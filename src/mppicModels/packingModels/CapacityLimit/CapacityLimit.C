@@ -12,8 +12,7 @@
 template<class CloudType>
 const Foam::wordList Foam::CapacityLimit<CloudType>::keywords
 ({
-    "supportPatches", "supportAngle", "overfill", "pushThrough",
-    "followDrainingPacks", "drainTime"
+    "supportPatches", "supportAngle", "pushThrough", "followDrainingPacks"
 });
 
 
@@ -28,7 +27,6 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
 )
 :
     holdSupportedPacks_(holdSupportedPacks),
-    overfill_(readOverfill(coeffs)),
     entries_(),
     support_(mesh, coeffs),
     drain_(mesh, coeffs),
@@ -56,7 +54,6 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
 )
 :
     holdSupportedPacks_(cl.holdSupportedPacks_),
-    overfill_(cl.overfill_),
     entries_(),
     support_(cl.support_),
     drain_(cl.drain_),
@@ -65,23 +62,6 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
-
-template<class CloudType>
-Foam::scalar Foam::CapacityLimit<CloudType>::readOverfill
-(
-    const dictionary& coeffs
-)
-{
-    const scalar overfill = coeffs.lookupOrDefault<scalar>("overfill", 0.5);
-    if (overfill < 0 || overfill > 1)
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Dictionary " << coeffs.name() << ", keyword overfill: value "
-            << overfill << " is out of range [0, 1]" << exit(FatalIOError);
-    }
-    return overfill;
-}
-
 
 template<class CloudType>
 void Foam::CapacityLimit<CloudType>::warnOfCutsAcrossGravity
@@ -130,8 +110,7 @@ template<class CloudType>
 void Foam::CapacityLimit<CloudType>::reportFullCell
 (
     const CloudType& cloud,
-    const scalar closePackFraction,
-    const scalar overfill
+    const scalar closePackFraction
 )
 {
     const fvMesh& mesh = cloud.mesh();
@@ -168,7 +147,7 @@ void Foam::CapacityLimit<CloudType>::reportFullCell
     const scalar v = parcelVolume/nParcels;
     const scalar V = cellVolume/nCells;
     label n = 0;
-    while (cellRoom::fits(v, closePackFraction*V - n*v, overfill))
+    while (cellRoom::fits(v, closePackFraction*V - n*v))
     {
         ++n;
     }
@@ -222,15 +201,14 @@ Foam::boolList Foam::CapacityLimit<CloudType>::fullCells
         largest = max(largest, entries_.returnedLargest());
     }
 
-    // No room for (1 - overfill) of its largest parcel, as the entries are
-    // admitted
+    // No room for half of its largest parcel, as the entries are admitted
     boolList full(mesh.nCells());
     forAll(full, celli)
     {
         const scalar room = closePackFraction*mesh.V()[celli] - volume[celli];
         full[celli] =
             largest[celli] > 0
-         && !cellRoom::fits(largest[celli], room, overfill_);
+         && !cellRoom::fits(largest[celli], room);
     }
     return full;
 }
@@ -258,12 +236,12 @@ void Foam::CapacityLimit<CloudType>::startStep
     const scalar deltaT
 )
 {
-    entries_.update(cloud, closePackFraction, overfill_, deltaT);
+    entries_.update(cloud, closePackFraction, deltaT);
     deltaT_ = deltaT;
 
     if (!fullCellReported_)
     {
-        reportFullCell(cloud, closePackFraction, overfill_);
+        reportFullCell(cloud, closePackFraction);
         fullCellReported_ = true;
     }
 

@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ColoringFunction.H"
-#include "boundedCoefficient.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -27,8 +26,7 @@ const Foam::wordList
 Foam::PackingModels::ColoringFunction<CloudType>::keywords
 ({
     "closePackFraction", "e1", "e2", "case1a", "case1b", "packAtClosePack",
-    "reflection", "impulse", "capacityLimit", "holdSupportedPacks",
-    "randomVelocity"
+    "reflection", "impulse", "capacityLimit", "holdSupportedPacks"
 });
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -52,14 +50,6 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
         )
     ),
     capacityLimit_(this->coeffs().lookupOrDefault("capacityLimit", true)),
-    randomVelocity_
-    (
-        mppicCoefficients::read
-        (
-            this->coeffs(), "randomVelocity", 0,
-            mppicCoefficients::bounds::closed(0, 0.1)
-        )
-    ),
     limit_
     (
         owner.mesh(),
@@ -80,7 +70,6 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     rules_(cm.rules_),
     impulse_(cm.impulse_),
     capacityLimit_(cm.capacityLimit_),
-    randomVelocity_(cm.randomVelocity_),
     limit_(cm.limit_)
 {}
 
@@ -257,18 +246,10 @@ velocityCorrection
 {
     const packState pack = packFor(p);
 
-    // MFiX-PIC's random velocity, after the forces and before the rules
-    vector U = p.U();
-    if (randomVelocity_ > 0)
-    {
-        U += randomVelocity_
-           *cmptMultiply(this->owner().rndGen().template GaussNormal<vector>(), U);
-    }
-
     vector correction =
         rules_.correctedVelocity
         (
-            U,
+            p.U(),
             pack.uMean,
             pack.impulse,
             this->owner().g().value(),

@@ -14,8 +14,7 @@ const Foam::wordList
 Foam::PackingModels::MfixSnider<CloudType>::keywords
 ({
     "closePackFraction", "pSolid", "gamma", "eps", "e1",
-    "slipVelocityFactor", "capFactor", "meanFreePathCap",
-    "restWhereConverging", "releaseAbove", "collisionDamping", "capacityLimit",
+    "slipVelocityFactor", "releaseAbove", "collisionDamping", "capacityLimit",
     "holdSupportedPacks"
 });
 

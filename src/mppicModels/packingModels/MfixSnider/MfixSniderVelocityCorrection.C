@@ -4,9 +4,9 @@
 -------------------------------------------------------------------------------
 Description
     MfixSnider's velocity correction of one parcel: the limited impulse,
-    the optional travel cap, damping and release, the capacity limit, the
-    reactions and the boundary rule (see MfixSnider.H). The velocity the
-    parcel keeps goes to keepAfterTrack, which writes it once in the step
+    the optional damping and release, the capacity limit, the reactions
+    and the boundary rule (see MfixSnider.H). The velocity the parcel
+    keeps goes to keepAfterTrack, which writes it once in the step
     (MfixPackingModel.H: at once, or with conserveMomentum at the end of
     the step with the packs' reactions).
 
@@ -36,13 +36,7 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
             p.U(), (*previousMeanVelocity_)[celli], dU, tauGrad
         );
 
-    Unew =
-        rules_.meanFreePathCapped
-        (
-            Unew, tauGrad, cellAlpha_[celli], 0.5*p.d(), deltaT
-        );
-
-    // The stress's share of the change (limiter, travel cap), before the
+    // The stress's share of the change (the limiter's), before the
     // damping, which relaxes toward the cell's own mean
     const vector dStress = Unew - p.U();
 

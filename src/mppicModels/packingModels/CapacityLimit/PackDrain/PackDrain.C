@@ -12,7 +12,6 @@ Foam::PackDrain::PackDrain(const fvMesh& mesh, const dictionary& coeffs)
 :
     mesh_(mesh),
     on_(coeffs.lookupOrDefault("followDrainingPacks", false)),
-    drainTime_(readDrainTime(coeffs)),
     moved_(),
     solids_()
 {
@@ -25,21 +24,6 @@ Foam::PackDrain::PackDrain(const fvMesh& mesh, const dictionary& coeffs)
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::scalar Foam::PackDrain::readDrainTime(const dictionary& coeffs)
-{
-    const scalar drainTime = coeffs.lookupOrDefault<scalar>("drainTime", 0.1);
-
-    if (!(drainTime > 0))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Dictionary " << coeffs.name() << ", keyword drainTime: value "
-            << drainTime << " is not > 0 s" << exit(FatalIOError);
-    }
-
-    return drainTime;
-}
-
 
 Foam::volScalarField& Foam::PackDrain::drain() const
 {
@@ -96,7 +80,7 @@ void Foam::PackDrain::endTally(const scalar dt)
 
     volScalarField& d = drain();
     scalarField& drain = d.primitiveFieldRef();
-    const scalar weight = min(dt/drainTime_, scalar(1));
+    const scalar weight = min(dt/drainTime, scalar(1));
     forAll(drain, celli)
     {
         const scalar u =

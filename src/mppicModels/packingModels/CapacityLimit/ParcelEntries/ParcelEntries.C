@@ -70,7 +70,6 @@ void Foam::ParcelEntries<CloudType>::update
 (
     const CloudType& cloud,
     const scalar closePackFraction,
-    const scalar overfill,
     const scalar deltaT
 )
 {
@@ -232,10 +231,7 @@ void Foam::ParcelEntries<CloudType>::update
 
     startFraction_ = startVolume/mesh.V();
 
-    admitUpToClosePack
-    (
-        mesh, closePackFraction, overfill, keptVolume, entrants
-    );
+    admitUpToClosePack(mesh, closePackFraction, keptVolume, entrants);
 
     nPushed_ = 0;
     nPushedToward_ = label(0);
@@ -243,7 +239,7 @@ void Foam::ParcelEntries<CloudType>::update
     {
         nPushed_ = pushRefusedOn
         (
-            mesh, closePackFraction, overfill, keptVolume, entrants, stayers
+            mesh, closePackFraction, keptVolume, entrants, stayers
         );
     }
 }
@@ -254,7 +250,6 @@ void Foam::ParcelEntries<CloudType>::admitUpToClosePack
 (
     const fvMesh& mesh,
     const scalar closePackFraction,
-    const scalar overfill,
     scalarField& keptVolume,
     List<DynamicList<entrant>>& entrants
 )
@@ -307,7 +302,7 @@ void Foam::ParcelEntries<CloudType>::admitUpToClosePack
             const label celli = pending.remove();
 
             // Room up to close pack: a cell takes entrants while it stays
-            // within overfill parcels above close pack (0.5: the parcel
+            // within half a parcel above close pack (cellRoom: the parcel
             // count that comes closest to close pack)
             scalar room =
                 closePackFraction*mesh.V()[celli] - keptVolume[celli];
@@ -319,7 +314,7 @@ void Foam::ParcelEntries<CloudType>::admitUpToClosePack
                 {
                     continue;
                 }
-                if (cellRoom::fits(candidate.volume, room, overfill))
+                if (cellRoom::fits(candidate.volume, room))
                 {
                     room -= candidate.volume;
                     continue;

@@ -56,7 +56,6 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
 (
     const fvMesh& mesh,
     const scalar closePackFraction,
-    const scalar overfill,
     const scalarField& keptVolume,
     const List<DynamicList<entrant>>& entrants,
     List<DynamicList<const parcelType*>>& stayers
@@ -90,7 +89,7 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
     {
         return cellRoom::fits
         (
-            volume, closePackFraction*mesh.V()[celli] - load[celli], overfill
+            volume, closePackFraction*mesh.V()[celli] - load[celli]
         );
     };
 

@@ -55,18 +55,6 @@ Foam::sniderStressRules::sniderStressRules(const dictionary& coeffs)
             mppicCoefficients::bounds::closed(0, 1)
         )
     ),
-    capFactor_
-    (
-        mppicCoefficients::read
-        (
-            coeffs, "capFactor", 1.15, mppicCoefficients::bounds::atLeast(1)
-        )
-    ),
-    meanFreePathCap_(coeffs.lookupOrDefault<bool>("meanFreePathCap", false)),
-    restWhereConverging_
-    (
-        coeffs.lookupOrDefault<bool>("restWhereConverging", false)
-    ),
     releaseAbove_
     (
         mppicCoefficients::read
@@ -84,7 +72,7 @@ Foam::sniderStressRules::sniderStressRules(const dictionary& coeffs)
 
 Foam::scalar Foam::sniderStressRules::cappedFraction(const scalar alpha) const
 {
-    return min(max(alpha, scalar(0)), min(0.995, capFactor_*closePackFraction_));
+    return min(max(alpha, scalar(0)), min(0.995, capFactor*closePackFraction_));
 }
 
 
@@ -129,15 +117,8 @@ Foam::vector Foam::sniderStressRules::correctedVelocity
 
     for (direction k = 0; k < vector::nComponents; ++k)
     {
-        // The velocity reflected about: the scaled mean, or rest where the
-        // mean itself moves up the stress gradient (into denser solids)
-        const bool converging = uMean[k]*tauGrad[k] > 0;
-        const scalar frame =
-            (restWhereConverging_ && converging)
-          ? 0
-          : slipVelocityFactor_*uMean[k];
-
-        const scalar reflection = (1 + e1_)*(frame - U[k]);
+        const scalar reflection =
+            (1 + e1_)*(slipVelocityFactor_*uMean[k] - U[k]);
 
         if (tauGrad[k] <= 0)
         {
@@ -150,31 +131,6 @@ Foam::vector Foam::sniderStressRules::correctedVelocity
     }
 
     return Unew;
-}
-
-
-Foam::vector Foam::sniderStressRules::meanFreePathCapped
-(
-    const vector& U,
-    const vector& tauGrad,
-    const scalar alpha,
-    const scalar radius,
-    const scalar deltaT
-) const
-{
-    const scalar packedAlpha = 1 - 0.95*(1 - closePackFraction_);
-    if (!meanFreePathCap_ || alpha <= packedAlpha || (U & tauGrad) <= 0)
-    {
-        return U;
-    }
-
-    const scalar l = meanFreePath(alpha, radius);
-    const scalar travel = mag(U)*deltaT;
-    if (travel <= l)
-    {
-        return U;
-    }
-    return U*(l/travel);
 }
 
 
