@@ -9,6 +9,8 @@
 # 1.7 % of the solids volume missing, see the case's README.)
 # At every period all parcels present and
 #     |sum eps_g V + sum parcel volumes - V_total|/V_total <= 1e-14.
+# What this short window cannot show is the validation matrix's: bin/validate
+# depositionConservation (docs/VALIDATION.md).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: depositionConservation.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"

@@ -36,6 +36,9 @@
 #   - the log's capacity report at the first step: a full cell holds 5
 #     parcels, 0.6 of the cell (5 x 0.12), and the warning that this is
 #     below close pack 0.62 (tests/regression/kuipersJetClosePack.sh).
+# What this short window cannot show (the seed's 20-30 s: deltaP/weight >=
+# 0.90, the profiles within 0.035 / 0.058) is the validation matrix's:
+# bin/validate kuipersJet (docs/VALIDATION.md).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: kuipersJet.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"

@@ -25,6 +25,9 @@
 # beads, issue 21; FAIL here with that library).
 # And mfixSnider with conserveMomentum true, which shares that rule (before
 # 2026-11-26 it did not: 1.97 x Ergun at 0.06 m/s, FAIL here).
+# What this short window cannot show (the 12 s ramp: Umf within 10 % of 0.182
+# m/s, plateau 1 +- 0.03) is the validation matrix's: bin/validate
+# minimumFluidization (docs/VALIDATION.md).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: minimumFluidization.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"

@@ -13,6 +13,8 @@
 #     (basic: the cell solids fraction, which moves in steps of one parcel,
 #     0.01875 of a cell here) is at most
 #     max(1.03*alpha_cp, alpha_cp + one parcel) = max(0.618, 0.61875).
+# The validation matrix runs the same case: bin/validate sedimentation
+# (docs/VALIDATION.md).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: sedimentation.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"

@@ -8,6 +8,9 @@
 # there): the settling front of eq 6 with the parcels' start from rest, the
 # filling front of a packed bed at rest on the bottom wall. (The seed's
 # idealised eqs 6 and 8 are printed too; see the case's README.)
+# What this short window cannot show (the fronts at 1 s within 0.010 m of the
+# exact solutions) is the validation matrix's: bin/validate
+# settlingShocks-0.10, -0.15 and -0.20 (docs/VALIDATION.md).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: settlingShocks.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"

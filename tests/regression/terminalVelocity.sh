@@ -5,6 +5,8 @@
 # 15 s): the parcel's velocity at 0.3 s and its height at every output time
 # within 0.5 % of the RK4 solution of eq 1 (computed in
 # terminalVelocityResults.py, the formula written out there).
+# The validation matrix runs the same case: bin/validate terminalVelocity
+# (docs/VALIDATION.md).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: terminalVelocity.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"

@@ -14,6 +14,9 @@
 #   - 7680 parcels and the cloud mass 0.18 kg at every step;
 #   - the largest cell solids fraction at most max(1.05*0.6, 0.6 + one
 #     parcel = 0.6/8) = 0.675 (cell-based field).
+# What this short window cannot show (deltaP/weight over 4-10 s within 1.00 +-
+# 0.02) is the validation matrix's: bin/validate uniformBed-3, -8 and -16
+# (docs/VALIDATION.md).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: uniformFluidization.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"

@@ -8,6 +8,8 @@
 # 2.9e-4 m at 3T; MFiX-PIC 2.59e-3 m). An odd number of periods, because
 # there an evaluation of the field at the start or the end of the step
 # instead of its middle leaves dt*|u| ~ 5e-3 m.
+# What this short window cannot show (the 16 periods) is the validation
+# matrix's: bin/validate vortexAdvection (docs/VALIDATION.md).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: vortexAdvection.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"

@@ -16,6 +16,9 @@
 # - the same closed case for 1 s with solids sub-cycling (10 sub-steps per
 #   gas step, response-time limited): the enthalpy and species sources summed
 #   over the sub-steps (CloudSourceSum), water and enthalpy again to 1e-10.
+# What this short window cannot show (the 11 humidities over the seed's 15 s,
+# within 0.3 K) is the validation matrix's: bin/validate wetBulb
+# (docs/VALIDATION.md).
 #------------------------------------------------------------------------------
 runDir="${1:?usage: wetBulb.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
