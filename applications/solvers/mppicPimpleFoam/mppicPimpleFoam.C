@@ -110,11 +110,10 @@ Usage
     the difference keeps one sign. The parcels then get more drag than the
     gas's pressure drop shows: 0.06-0.08 of the bed's weight in the uniform
     bed at 3 parcels per packed cell and in the Kuipers jet with
-    pushThrough (docs/VALIDATION.md, issue 21). balanceImplicitDrag removes
-    the difference. It is off by default, so that the solver gives stock
-    MPPICFoam's answer, which keeps the difference; tutorials/kuipersJet
-    turns it on (with coloringFunction's pushThrough: docs/VALIDATION.md,
-    issue 21's seventeenth pass).
+    pushThrough. balanceImplicitDrag removes the difference. It is off by
+    default, so that the solver gives stock MPPICFoam's answer, which keeps
+    the difference; tutorials/kuipersJet turns it on (with
+    coloringFunction's pushThrough).
 
 \*---------------------------------------------------------------------------*/
 

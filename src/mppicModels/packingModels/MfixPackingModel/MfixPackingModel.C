@@ -7,39 +7,6 @@
 #include "packingFaceGradient.H"
 #include "wallPolyPatch.H"
 #include "cellFaceGeometry.H"
-#include "boundedCoefficient.H"
-
-// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
-
-template<class CloudType>
-const Foam::wordList
-Foam::PackingModels::MfixPackingModel<CloudType>::keywords
-({
-    "conserveMomentum", "freePackReactionsToGas"
-});
-
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-template<class CloudType>
-const Foam::dictionary&
-Foam::PackingModels::MfixPackingModel<CloudType>::checkedCoeffs
-(
-    const dictionary& dict,
-    const word& type,
-    const wordList& modelKeywords
-)
-{
-    const dictionary& coeffs = dict.subDict(type + "Coeffs");
-
-    wordList valid(modelKeywords);
-    valid.append(keywords);
-    valid.append(CapacityLimit<CloudType>::keywords);
-
-    mppicCoefficients::checkKeywords(coeffs, valid, type);
-    return coeffs;
-}
-
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 

@@ -30,18 +30,18 @@ Description
     cells are served in the order of that key, not in the mesh's: the
     mesh's numbering preferred no direction before only by chance (the
     lowest-numbered first sent the Kuipers jet's pushes toward its left
-    wall: docs/VALIDATION.md, issue 21, twenty-fourth pass); a continued
+    wall); a continued
     or re-ordered run chooses the same. Each cell of the chain pushes
     the parcel that stayed in it and lies furthest toward the next cell
     (level parcels, within 1e-9 of the distance between the cells, by
     their lower (origProc, origId)).
     (Chains only ahead of the entrant, or none for falling entrants, left
     the refusals of falling parcels alone and the Kuipers jet's bed was
-    held up by them: docs/VALIDATION.md, issue 21, fourteenth pass.)
+    held up by them.)
     In parallel a chain stays on its processor, and an entrant from another
     processor pushed on here has been counted back in its old cell there
     for the step: over the Kuipers jet's statistics window 2 ranks do not
-    give the serial answer (docs/VALIDATION.md, issue 21, eighteenth pass).
+    give the serial answer.
 
 \*---------------------------------------------------------------------------*/
 

@@ -1,0 +1,47 @@
+/*---------------------------------------------------------------------------*\
+    mppicModels: MFiX-PIC dense-particle models for OpenFOAM
+    This file is part of the mppicModels project, GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    The keywords of <type>Coeffs read by the base, and the one check of
+    every entry of that dictionary (the model's, the base's and
+    CapacityLimit's keywords).
+
+\*---------------------------------------------------------------------------*/
+
+#include "MfixPackingModel.H"
+#include "boundedCoefficient.H"
+
+// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::wordList
+Foam::PackingModels::MfixPackingModel<CloudType>::keywords
+({
+    "conserveMomentum", "freePackReactionsToGas"
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::dictionary&
+Foam::PackingModels::MfixPackingModel<CloudType>::checkedCoeffs
+(
+    const dictionary& dict,
+    const word& type,
+    const wordList& own
+)
+{
+    const dictionary& coeffs = dict.subDict(type + "Coeffs");
+
+    wordList valid(own);
+    valid.append(keywords);
+    valid.append(CapacityLimit<CloudType>::keywords);
+
+    mppicCoefficients::checkKeywords(coeffs, valid, type);
+    return coeffs;
+}
+
+
+// ************************************************************************* //
