@@ -6,8 +6,8 @@
 # case1a maybe -> FatalIOError naming the keyword (and the range), exit
 # status 1, no crash (mppicPimpleFoam); likewise capacityLimit perhaps and
 # solidsFractionFrom maybe (the message lists cell and averaging); the
-# solver's PIMPLE switches faceInterpolatedDrag maybe and gasVelocityFromFlux
-# perhaps; balanceImplicitDrag maybe, and balanceImplicitDrag true with the
+# solver's PIMPLE switches faceInterpolatedDrag maybe and
+# balanceImplicitDrag maybe, and balanceImplicitDrag true with the
 # cloud's U coupled explicitly (nothing to balance: the error names the
 # keyword and semiImplicit).
 . "${0%/*}/badInputFunctions"
@@ -68,12 +68,6 @@ check fatal "$case/log.broken" $rc "faceInterpolatedDrag" "maybe" || status=1
 
 foamDictionary "$case/system/fvSolution" \
     -entry PIMPLE/faceInterpolatedDrag -remove > /dev/null
-setEntry "$case" system/fvSolution PIMPLE/gasVelocityFromFlux perhaps
-runBroken "$case" mppicPimpleFoam
-check fatal "$case/log.broken" $rc "gasVelocityFromFlux" "perhaps" || status=1
-
-foamDictionary "$case/system/fvSolution" \
-    -entry PIMPLE/gasVelocityFromFlux -remove > /dev/null
 setEntry "$case" system/fvSolution PIMPLE/balanceImplicitDrag maybe
 runBroken "$case" mppicPimpleFoam
 check fatal "$case/log.broken" $rc "balanceImplicitDrag" "maybe" || status=1

@@ -2,21 +2,17 @@
 # badInput-packingCoeffs <runDir>: coloringFunction with e1 = 1.5, then
 # with impulse sideways -> FatalIOError naming the keyword and the allowed
 # range or names; coloringFunction with randomVelocity 0 and both models
-# with overfill 0.5 (removed keywords) -> FatalIOError naming the unknown
-# keyword; coloringFunction with pushThrough sometimes -> FatalIOError
-# naming pushThrough and sometimes;
-# coloringFunction with packAtClosePack sometimes -> the same for it;
-# coloringFunction and mfixSnider with followDrainingPacks true but
-# holdSupportedPacks false -> FatalIOError naming followDrainingPacks, true
-# and holdSupportedPacks (the drain acts on held packs only); both models
-# with freePackReactionsToGas true but conserveMomentum false ->
-# FatalIOError naming freePackReactionsToGas, true and conserveMomentum;
-# coloringFunction with freePackReactionsToGas sometimes -> FatalIOError
-# naming it and sometimes;
-# mfixSnider with freePackReactionsToGas true (and conserveMomentum) ->
-# FatalIOError naming freePackReactionsToGas, true and mfixSnider;
-# both models with a misspelt keyword (pushThru) -> FatalIOError naming it
-# and listing the valid ones (pushThrough among them);
+# with overfill 0.5, pushThrough true, followDrainingPacks true,
+# supportAngle 40, freePackReactionsToGas true (removed keywords; the
+# first two fixed at their old defaults, the next three part of the
+# defaults) and coloringFunction with packAtClosePack true -> FatalIOError
+# naming the unknown keyword;
+# both models with conserveMomentum true (a switch before, now none,
+# packs or gas) -> FatalIOError naming conserveMomentum, true and the
+# three values; mfixSnider with conserveMomentum gas -> FatalIOError
+# naming conserveMomentum, gas and mfixSnider;
+# both models with a misspelt keyword (holdSupportedPack) -> FatalIOError
+# naming it and listing the valid ones (holdSupportedPacks among them);
 # exit status 1 (both models' cases), no crash (mppicPimpleFoam).
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
@@ -62,44 +58,35 @@ brokenInBoth()
 }
 
 # A misspelt keyword (MfixPackingModel's check of every entry)
-brokenInBoth "pushThru true;" "unknown keyword pushThru" "pushThrough" \
-    "closePackFraction"
+brokenInBoth "holdSupportedPack true;" "unknown keyword holdSupportedPack" \
+    "holdSupportedPacks" "closePackFraction"
 
-# overfill, removed (fixed at 0.5: cellRoom), is unknown
-brokenInBoth "overfill 0.5;" "unknown keyword overfill"
-
-# pushThrough not a switch (read by CapacityLimit)
+# Removed keywords are unknown: overfill (fixed at 0.5: cellRoom);
+# push-through, the drain and the support angle are part of the limit
+for entry in "overfill 0.5;" "pushThrough true;" "followDrainingPacks true;" \
+    "supportAngle 40;" "freePackReactionsToGas true;"
+do
+    brokenInBoth "$entry" "unknown keyword ${entry%% *}"
+done
 setEntry "$runDir/case" constant/kinematicCloudProperties \
     subModels/packingModel coloringFunction
 setEntry "$runDir/case" constant/kinematicCloudProperties \
-    subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; pushThrough sometimes; }"
+    subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; packAtClosePack true; }"
 runBroken "$runDir/case" mppicPimpleFoam
-check fatal "$runDir/case/log.broken" $rc "pushThrough" "sometimes" || status=1
-setEntry "$runDir/case" constant/kinematicCloudProperties \
-    subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; packAtClosePack sometimes; }"
-runBroken "$runDir/case" mppicPimpleFoam
-check fatal "$runDir/case/log.broken" $rc "packAtClosePack" "sometimes" || status=1
-setEntry "$runDir/case" constant/kinematicCloudProperties \
-    subModels/coloringFunctionCoeffs "{ closePackFraction 0.6; conserveMomentum true; freePackReactionsToGas sometimes; }"
-runBroken "$runDir/case" mppicPimpleFoam
-check fatal "$runDir/case/log.broken" $rc "freePackReactionsToGas" "sometimes" \
+check fatal "$runDir/case/log.broken" $rc "unknown keyword packAtClosePack" \
     || status=1
 
-# followDrainingPacks without held packs (CapacityLimit)
-brokenInBoth "holdSupportedPacks false; followDrainingPacks true;" \
-    "followDrainingPacks" "true" "holdSupportedPacks"
+# conserveMomentum takes none, packs or gas (MfixPackingModel)
+brokenInBoth "conserveMomentum true;" "conserveMomentum" "true" \
+    "none" "packs" "gas"
 
-# freePackReactionsToGas without conserveMomentum (MfixPackingModel)
-brokenInBoth "freePackReactionsToGas true;" \
-    "freePackReactionsToGas" "true" "conserveMomentum"
-
-# freePackReactionsToGas is coloringFunction's: mfixSnider refuses it
+# the packs' reactions to the gas are coloringFunction's: mfixSnider
+# refuses them
 setEntry "$runDir/case" constant/kinematicCloudProperties \
     subModels/packingModel mfixSnider
 setEntry "$runDir/case" constant/kinematicCloudProperties \
-    subModels/mfixSniderCoeffs \
-    "{ closePackFraction 0.6; conserveMomentum true; freePackReactionsToGas true; }"
+    subModels/mfixSniderCoeffs "{ closePackFraction 0.6; conserveMomentum gas; }"
 runBroken "$runDir/case" mppicPimpleFoam
-check fatal "$runDir/case/log.broken" $rc "freePackReactionsToGas" "true" \
+check fatal "$runDir/case/log.broken" $rc "conserveMomentum" "gas" \
     "mfixSnider" || status=1
 exit $status

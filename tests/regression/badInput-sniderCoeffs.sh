@@ -1,12 +1,11 @@
 #!/bin/bash
 # badInput-sniderCoeffs <runDir>: mfixSnider with pSolid -1, gamma -1,
 # slipVelocityFactor 1.5, collisionDamping maybe, capacityLimit often,
-# holdSupportedPacks rarely, pushThrough sometimes, pushThrough true with
-# capacityLimit false, releaseAbove 0.6 and 1.2 (outside
-# (closePackFraction, 1]), supportAngle 100, supportPatches (nowhere),
-# conserveMomentum perhaps, a misspelt keyword (colisionDamping) and a
-# removed one (capFactor 1.15) -> FatalIOError naming the keyword and the
-# value (or the allowed range or keywords; unknown keyword capFactor),
+# holdSupportedPacks rarely, releaseAbove 0.6 and 1.2 (outside
+# (closePackFraction, 1]), supportPatches (nowhere), conserveMomentum
+# perhaps, a misspelt keyword (colisionDamping) and removed ones
+# (capFactor 1.15, supportAngle 40) -> FatalIOError naming the keyword and
+# the value (or the allowed range or keywords; unknown keyword capFactor),
 # exit status 1, no crash (mppicPimpleFoam).
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
@@ -32,13 +31,10 @@ tryCoeffs "capFactor 1.15;" "unknown keyword capFactor"
 tryCoeffs "collisionDamping maybe;" "collisionDamping" "maybe"
 tryCoeffs "capacityLimit often;" "capacityLimit" "often"
 tryCoeffs "holdSupportedPacks rarely;" "holdSupportedPacks" "rarely"
-tryCoeffs "supportAngle 100;" "supportAngle" "100" "(0, 90]"
+tryCoeffs "supportAngle 40;" "unknown keyword supportAngle"
 tryCoeffs "supportPatches (nowhere);" "supportPatches" "nowhere"
-tryCoeffs "conserveMomentum perhaps;" "conserveMomentum" "perhaps"
+tryCoeffs "conserveMomentum perhaps;" "conserveMomentum" "perhaps" "packs"
 tryCoeffs "releaseAbove 0.6;" "releaseAbove" "0.6" "(0.6, 1]"
 tryCoeffs "releaseAbove 1.2;" "releaseAbove" "1.2" "(0.6, 1]"
-tryCoeffs "pushThrough sometimes;" "pushThrough" "sometimes"
-tryCoeffs "capacityLimit false; pushThrough true;" "pushThrough" "true" \
-    "capacityLimit"
 tryCoeffs "colisionDamping true;" "colisionDamping" "collisionDamping"
 exit $status

@@ -18,13 +18,12 @@
 # README: 1/40 here; measured 1.029 and 0.968 x Ergun, the second a mean
 # over 0.115-0.12 m/s. Before 2026-11-27 the inlet's fixedFluxPressure
 # left out the first half cell too: 1.004 and 0.942, which fails here.)
-# The same with coloringFunction's conserveMomentum true: a held pack hands
+# The same with coloringFunction's conserveMomentum packs: a held pack hands
 # the reactions' part down along gravity to its support, so the bed at rest
-# keeps Ergun's drop (before 2026-11-26 its parcels kept that velocity and
-# the drag of their fall raised dP*: measured 1.6-1.9 x Ergun on Kuipers'
-# beads, issue 21; FAIL here with that library).
-# And mfixSnider with conserveMomentum true, which shares that rule (before
-# 2026-11-26 it did not: 1.97 x Ergun at 0.06 m/s, FAIL here).
+# keeps Ergun's drop (had its parcels kept that velocity, the drag of their
+# fall would raise dP*: measured 1.6-1.9 x Ergun on Kuipers' beads).
+# And mfixSnider with conserveMomentum packs, which shares that rule
+# (without it: 1.97 x Ergun at 0.06 m/s).
 # What this short window cannot show (the 12 s ramp: Umf within 10 % of 0.182
 # m/s, plateau 1 +- 0.03) is the validation matrix's: bin/validate
 # minimumFluidization (docs/VALIDATION.md).
@@ -33,14 +32,14 @@ runDir="${1:?usage: minimumFluidization.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 status=0
-for run in coloringFunction:false coloringFunction:true mfixSnider:true
+for run in coloringFunction:none coloringFunction:packs mfixSnider:packs
 do
     packing=${run%:*}
     conserve=${run#*:}
     case="$runDir/$packing-conserveMomentum-$conserve"
     copyTutorial validation/minimumFluidization "$case"
     # both models' entries
-    sed -i "s/^\( *conserveMomentum \+\)[a-z]\+;/\1$conserve;/" \
+    sed -i "/\(coloringFunction\|mfixSnider\)Coeffs/,/}/s/^\( *\)closePackFraction .*/&\n\1conserveMomentum $conserve;/" \
         "$case/constant/kinematicCloudProperties"
     [ "$(grep -c "^ *conserveMomentum $conserve;" \
         "$case/constant/kinematicCloudProperties")" = 2 ] \

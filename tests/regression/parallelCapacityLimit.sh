@@ -4,7 +4,7 @@
 # processes: 2 (MPI ranks at most; tests/Alltest runs it alone)
 # The capacity limit makes serial's decisions on any decomposition
 # (ParcelEntries.H): tutorials/circulatingFluidizedBed with -packing
-# mfixSnider (capacity limit, diffusion averaging), pushThrough false (its
+# mfixSnider (diffusion averaging), capacityLimit refuse (push-through's
 # chains stay on their processor), the gas solved to 1e-13, run serially
 # from the seeded start (riser bed and standpipe packed) to 0.01 s; from its
 # written 0.005 s, on serially and on 2 ranks (simple (2 1 1), a cut near
@@ -28,9 +28,10 @@ runDir="${1:?usage: parallelCapacityLimit.sh <runDir>}"
 
 start="$runDir/start"
 copyTutorial circulatingFluidizedBed "$start"
-sed -i 's/^\( *pushThrough *\)true;/\1false;/' "$start/constant/kinematicCloudProperties"
-[ "$(grep -c 'pushThrough *false;' "$start/constant/kinematicCloudProperties")" -ge 1 ] \
-    || { echo "pushThrough not set to false"; exit 1; }
+sed -i '/mfixSniderCoeffs/,/}/s/^\( *\)closePackFraction .*/&\n\1capacityLimit refuse;/' \
+    "$start/constant/kinematicCloudProperties"
+[ "$(grep -c 'capacityLimit refuse;' "$start/constant/kinematicCloudProperties")" = 1 ] \
+    || { echo "capacityLimit not set to refuse"; exit 1; }
 tightGasSolvers "$start" || exit 1
 PROGRESS_EVERY=0 runAllrun "$start" -packing mfixSnider -riserBed 0.16 \
     -standpipeLevel 0.576 -equalArea -endTime 0.01 || exit 1

@@ -2,9 +2,10 @@
 #------------------------------------------------------------------------------
 # parallelPackDrain <runDir>
 # processes: 2 (MPI ranks at most; tests/Alltest runs it alone)
-# followDrainingPacks across a processor face: tutorials/settlingColumn with
-# coloringFunction (close pack 0.6, e1 0.85, e2 0.9) and followDrainingPacks
-# for 0.2 s, serial and on 2 processes (the tutorial's simple (1 2 1): a
+# The held packs' drain (PackDrain) across a processor face:
+# tutorials/settlingColumn with coloringFunction (close pack 0.6, e1 0.85,
+# e2 0.9, capacityLimit refuse: push-through's chains would stop at the
+# cut) for 0.2 s, serial and on 2 processes (the tutorial's simple (1 2 1): a
 # horizontal cut at 0.2 m, through the falling suspension of 0.10-0.35 m),
 # with the gas solved to 1e-13 (PCG/DIC, PBiCGStab/DILU, relTol 0).
 # PackDrain books each parcel's move from cell to cell along gravity to the
@@ -15,9 +16,9 @@
 #     cells on both sides of the cut (centres 0.1975 and 0.2025 m), so the
 #     comparison below covers moves across it;
 #   - packDrain on 2 processes within 1e-9 of the serial field's largest
-#     value (measured when written: 1.1e-14; with the build before a move
-#     from another processor was booked (8b18be9): 0.99, the cells below
-#     the cut, on processor 0, without drain: 0 against 0.361 m/s);
+#     value (measured when written: 1.1e-14; with a move from another
+#     processor not booked: 0.99, the cells below the cut, on processor 0,
+#     without drain: 0 against 0.361 m/s);
 #   - the same parcel count and cloud mass.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: parallelPackDrain.sh <runDir>}"
@@ -34,7 +35,7 @@ do
         subModels/packingModel coloringFunction
     setEntry "$dir" constant/kinematicCloudProperties \
         subModels/coloringFunctionCoeffs \
-        "{ closePackFraction 0.6; e1 0.85; e2 0.9; followDrainingPacks true; }"
+        "{ closePackFraction 0.6; e1 0.85; e2 0.9; capacityLimit refuse; }"
     tightGasSolvers "$dir" || exit 1
 done
 grep -q '(1 2 1)' "$runDir/parallel/system/decomposeParDict" \

@@ -2,13 +2,13 @@
 #------------------------------------------------------------------------------
 # restartContinuity <runDir>
 # A run stopped at a written time and continued gives the run that did not
-# stop, gas included (issue 20):
+# stop, gas included:
 #   - mppicPimpleFoam on tutorials/validation/uniformFluidization (a
-#     bubbling bed, gas solved), with coloringFunction, with it and
-#     pushThrough (which must have pushed after the restart), with
-#     pushThrough and followDrainingPacks (packDrain read back, some cell
-#     draining; without the field the run differs), with
-#     freePackReactionsToGas (-packsToGas), and with mfixSnider:
+#     bubbling bed, gas solved), with coloringFunction's defaults (push-
+#     through, which must have pushed after the restart; held packs that
+#     follow their drain: packDrain read back, some cell draining, and
+#     without the field the run differs), with conserveMomentum gas
+#     (-packsToGas), and with mfixSnider:
 #     0 -> 0.05 s at once, and 0 -> 0.025 s then continued (startFrom
 #     latestTime) to 0.05 s; both write ascii at 17 digits;
 #   - mppicReactingPimpleFoam on tutorials/verification/wetBulb (a droplet
@@ -18,16 +18,12 @@
 # coordinates) and the gas fields equal to 1e-8 of each column's largest
 # magnitude (the log says where they are bitwise equal); parcel counts equal.
 # That the comparison can fail: the bed continued from a time written at 6
-# digits differs by more than 1e-8. (Before alphag.oldTime() was set at
-# start-up, the continued bed's gas velocity was 0.44 of its scale off after
-# 10 steps: the first step took the moved cloud's gas fraction as old.)
+# digits differs by more than 1e-8.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: restartContinuity.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 # wholeAndContinued <tutorial> <name> <precision> <T1> <T2> <endArg> [args]
-# (cloudEdit: a sed script for constant/kinematicCloudProperties, which
-# must then contain cloudCheck)
 wholeAndContinued()
 {
     local tutorial="$1" name="$2" precision="$3" t1="$4" t2="$5" endArg="$6"
@@ -40,12 +36,6 @@ wholeAndContinued()
         # (wetBulb writes every second: write the stop time; in both, as
         # its adjustable time step lands on write times)
         setEntry "$runDir/$name.$piece" system/controlDict writeInterval "$t1"
-        if [ -n "$cloudEdit" ]
-        then
-            sed -i "$cloudEdit" "$runDir/$name.$piece/constant/kinematicCloudProperties"
-            grep -q "$cloudCheck" "$runDir/$name.$piece/constant/kinematicCloudProperties" \
-                || { echo "$name: $cloudCheck not set"; exit 1; }
-        fi
     done
 
     runAllrun "$runDir/$name.whole" $endArg "$t2" "$@" || exit 1
@@ -75,62 +65,45 @@ do
         "$runDir/bed.$packing.continued" 0.05 1e-8 $bedFields || status=1
 done
 
-# coloringFunction with pushThrough: the chains start at the ninth step
-# (0.0045 s); after the restart at 0.025 s about 300 refused entrants a
-# step are pushed on (15 056 in the 50 steps, measured)
-cloudEdit='s/^\( *conserveMomentum false;\)$/\1\n        pushThrough true;/'
-cloudCheck='pushThrough true;'
-wholeAndContinued validation/uniformFluidization bed.pushThrough 17 \
-    0.025 0.05 "" -packing coloringFunction
-cloudEdit=""
-check sameState "$runDir/bed.pushThrough.whole" \
-    "$runDir/bed.pushThrough.continued" 0.05 1e-8 $bedFields || status=1
+# coloringFunction's push-through (its default): the chains start at the
+# ninth step (0.0045 s); after the restart at 0.025 s about 300 refused
+# entrants a step are pushed on (15 056 in the 50 steps, measured)
 pushes=$(awk '/^ *pushThrough: [0-9]+ refused/ {n += $2} END {print n + 0}' \
-    "$runDir/bed.pushThrough.continued/log.continue")
+    "$runDir/bed.coloringFunction.continued/log.continue")
 if [ "$pushes" -gt 0 ]
 then
-    echo "PASS pushThrough: $pushes refused entrants pushed on after the restart (> 0)"
+    echo "PASS push-through: $pushes refused entrants pushed on after the restart (> 0)"
 else
-    echo "FAIL pushThrough: no entrant pushed on after the restart"
+    echo "FAIL push-through: no entrant pushed on after the restart"
     status=1
 fi
 
-# followDrainingPacks: the drain each cell's pack has (the field packDrain)
-# is written and read back; continued without it (the field deleted from
-# the written 0.025 s), the run must differ
-cloudEdit='s/^\( *conserveMomentum false;\)$/\1\n        pushThrough true;\n        followDrainingPacks true;/'
-cloudCheck='followDrainingPacks true;'
-for name in bed.drain bed.drainLost
-do
-    wholeAndContinued validation/uniformFluidization $name 17 \
-        0.025 0.05 "" -packing coloringFunction
-done
-cloudEdit=""
-check sameState "$runDir/bed.drain.whole" "$runDir/bed.drain.continued" \
-    0.05 1e-8 $bedFields || status=1
-grep -q "followDrainingPacks: the packs' drain read from" \
-    "$runDir/bed.drain.continued/log.continue" \
-    && echo "PASS followDrainingPacks: packDrain read on the restart" \
-    || { echo "FAIL followDrainingPacks: packDrain not read"; status=1; }
+# The held packs' drain (the field packDrain) is written and read back;
+# continued without it (the field deleted from the written 0.025 s), the
+# run must differ
+grep -q "PackDrain: the packs' drain read from" \
+    "$runDir/bed.coloringFunction.continued/log.continue" \
+    && echo "PASS held packs' drain: packDrain read on the restart" \
+    || { echo "FAIL held packs' drain: packDrain not read"; status=1; }
 drainMax=$(awk '/^internalField/ {on = 1; next} on == 1 && /^\(/ {on = 2; next}
     /^\)/ {on = 0} on == 2 && $1 > m {m = $1} END {print m + 0}' \
-    "$runDir/bed.drain.continued/0.025/packDrain")
+    "$runDir/bed.coloringFunction.continued/0.025/packDrain")
 awk -v m="$drainMax" 'BEGIN { exit !(m > 0) }' \
-    && echo "PASS followDrainingPacks: largest drain at 0.025 s $drainMax m/s (> 0)" \
-    || { echo "FAIL followDrainingPacks: no cell drains at 0.025 s"; status=1; }
+    && echo "PASS held packs' drain: largest drain at 0.025 s $drainMax m/s (> 0)" \
+    || { echo "FAIL held packs' drain: no cell drains at 0.025 s"; status=1; }
 # the same run continued without the field: starts every drain at zero
-lost="$runDir/bed.drainLost.continued"
+lost="$runDir/bed.drainLost"
+cp -r "$runDir/bed.coloringFunction.continued" "$lost"
 rm -rf "$lost/0.0"[3-5]* "$lost/log.continue"
 rm -f "$lost/0.025/packDrain"
 (cd "$lost" && mppicPimpleFoam > log.continue 2>&1) || status=1
 grep -q "drain read from" "$lost/log.continue" \
-    && { echo "FAIL followDrainingPacks: a deleted packDrain was read"; status=1; }
-check differs "$runDir/bed.drain.whole" "$lost" 0.05 1e-8 $bedFields \
+    && { echo "FAIL held packs' drain: a deleted packDrain was read"; status=1; }
+check differs "$runDir/bed.coloringFunction.whole" "$lost" 0.05 1e-8 $bedFields \
     || status=1
 
-# freePackReactionsToGas (-packsToGas: conserving packs whose free packs
-# hand their reactions to the gas, followDrainingPacks, PIMPLE
-# balanceImplicitDrag): the rule keeps nothing across steps, so the
+# conserveMomentum gas (-packsToGas: conserving packs whose free packs
+# hand their reactions to the gas): the rule keeps nothing across steps, so the
 # continued run must be the whole one; the gas must take some share after
 # the restart (packingMonitor's gasPackingMomentumY, column 16)
 wholeAndContinued validation/uniformFluidization bed.packsToGas 17 \
@@ -141,9 +114,9 @@ toGasAfter=$(awk '!/^#/ && $1 > 0.025 && $16 != 0 {n++} END {print n + 0}' \
     "$runDir/bed.packsToGas.continued/postProcessing/packingMonitor/0.025/packingMonitor.dat")
 if [ "$toGasAfter" -gt 0 ]
 then
-    echo "PASS freePackReactionsToGas: the gas took a share at $toGasAfter steps after the restart (> 0)"
+    echo "PASS conserveMomentum gas: the gas took a share at $toGasAfter steps after the restart (> 0)"
 else
-    echo "FAIL freePackReactionsToGas: the gas took no share after the restart"
+    echo "FAIL conserveMomentum gas: the gas took no share after the restart"
     status=1
 fi
 

@@ -1,14 +1,12 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # uniformFluidizationPacksToGas <runDir>
-# tutorials/validation/uniformFluidization with -packsToGas (coloringFunction,
-# conserveMomentum, freePackReactionsToGas, followDrainingPacks, PIMPLE
-# balanceImplicitDrag) at 3 parcels per packed cell (2880 parcels of 382
-# particles), 2 s (about 2 minutes). Checks, over 1.2-2 s:
-#   - (deltaP - gas head)/(m g/A) within 2 % of 1 (issue 21's band),
-#     m g/A = 0.1*0.12*0.01*0.6*2500*9.81/0.001 = 1765.8 Pa (measured 0.9936
-#     on 2026-11-28; 2-6 s: 0.9927, where the same set-up without
-#     freePackReactionsToGas gave 0.9758, outside the band);
+# tutorials/validation/uniformFluidization with -packsToGas (coloringFunction
+# with conserveMomentum gas: the packs take the reactions, and those no
+# support holds hand them to the gas) at 3 parcels per packed cell (2880
+# parcels of 382 particles), 2 s (about 2 minutes). Checks, over 1.2-2 s:
+#   - (deltaP - gas head)/(m g/A) within 2 % of 1,
+#     m g/A = 0.1*0.12*0.01*0.6*2500*9.81/0.001 = 1765.8 Pa;
 #   - the packs' reactions the gas took (packingMonitor's
 #     gasPackingMomentum) at least 0.05 of the weight downward (measured
 #     -0.131: the falling parcels' landings on the packs; 0 if the packs'

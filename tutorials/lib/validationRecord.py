@@ -100,8 +100,8 @@ def coeffs_text(path, block):
     return " ".join(text[m.end():i - 1].split()).rstrip(";")
 
 
-PIMPLE_SWITCHES = ("faceInterpolatedDrag", "gasVelocityFromFlux",
-                   "balanceImplicitDrag")
+# mppicPimpleFoam's PIMPLE keywords and their defaults (mppicPimpleFoam.C)
+PIMPLE_SWITCHES = (("faceInterpolatedDrag", True), ("balanceImplicitDrag", True))
 
 
 def case_settings(case, cloud_file="kinematicCloudProperties"):
@@ -125,10 +125,13 @@ def case_settings(case, cloud_file="kinematicCloudProperties"):
         "averagingMethod " + with_coeffs(averaging, averaging + "Coeffs"),
         with_coeffs(drag.group(1), drag.group(1)) if drag else "no drag",
     ]
-    switches = [k for k in PIMPLE_SWITCHES
-                if post.dict_entry(fv_solution, k) in ("true", "on", "yes")]
-    parts.append("PIMPLE " + (", ".join(switches) if switches
-                              else "no switches"))
+    changed = []
+    for key, default in PIMPLE_SWITCHES:
+        value = post.dict_entry(fv_solution, key)
+        if value is not None and (value in ("true", "on", "yes")) != default:
+            changed.append("%s %s" % (key, value))
+    parts.append("PIMPLE " + (", ".join(changed) if changed
+                              else "defaults"))
     if os.path.exists(seeds):
         parts.append("seeded at solids fraction %s, %s parcels per cell"
                      % (post.dict_entry(seeds, "solidsFraction"),

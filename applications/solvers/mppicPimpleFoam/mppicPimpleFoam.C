@@ -25,9 +25,13 @@ Description
     by the pressure gradient without spurious velocities). Pressure-velocity
     coupling by PIMPLE with the gas continuity d(ag)/dt + div(ag phi) = 0.
 
-    Same equations and step as stock MPPICFoam of OpenFOAM v1912, so that
-    both solvers give the same answer on the same case; the models of
-    libmppicModels are linked in and selectable at run time.
+    Stock MPPICFoam's equations and step of OpenFOAM v1912, with two
+    differences in the coupling, both on by default (PIMPLE keywords below):
+    the face coefficient of the pressure equation carries the drag of the
+    face's two half cells in series, and the parcels get the implicit drag
+    the gas got. Both false give stock MPPICFoam's answer on the same case
+    (tests/regression/solverParity); the models of libmppicModels are
+    linked in and selectable at run time.
 
     With solidsSubCycling active in the cloud's properties, the parcels
     cross each gas step in sub-steps of MFiX-PIC's eq 24 (SolidsSubCycle:
@@ -73,47 +77,36 @@ Usage
     PIMPLE keywords of its own (the rest are pimpleControl's):
     \table
         Keyword              | Meaning                           | Default
-        faceInterpolatedDrag | face coefficient of the pressure equation as
+        faceInterpolatedDrag | face coefficient of the pressure equation
                                1/interpolate(A), with H and the explicit
-                               forces interpolated alongside, instead of
-                               MPPICFoam's interpolate(1/A), interpolate(H/A) | off
-        gasVelocityFromFlux  | cell gas velocity after the pressure corrector
-                               reconstructed from the face fluxes (the
-                               face-momentum form of OpenFOAM's two-fluid
-                               solvers) instead of HbyA plus the
-                               reconstructed face pressure gradients;
-                               meant with faceInterpolatedDrag on | off
+                               forces interpolated alongside (the two half
+                               cells' drag in series); false: MPPICFoam's
+                               interpolate(1/A), interpolate(H/A) | true
         balanceImplicitDrag  | after the gas solution the parcels get the
                                drag the gas got: each cell's parcels gain
                                UCoeff (U_g,new - U_g,old) over their mass
                                as one velocity change (implicitDragBalance);
-                               needs U semiImplicit in the cloud's
-                               sourceTerms, else a FatalIOError | off
+                               true needs U semiImplicit in the cloud's
+                               sourceTerms, else a FatalIOError | true with
+                               U semiImplicit, else false
     \endtable
-    With faceInterpolatedDrag on, a face between a packed cell and the
-    freeboard or a fixed-velocity inflow carries the drag of its half
-    cells: a fixed bed
-    20 cells high at 0.12 m/s (tutorials/validation/minimumFluidization,
-    inflow superficialVelocityInletVelocity) gives 0.993 of Ergun's pressure
-    drop and the first row its exact interstitial velocity, against 0.963
-    and 0.51 of it off. A bubbling bed (uniformFluidization) carried less of
-    its weight with it on (0.949 against 0.978, docs/VALIDATION.md), so it
-    is off by default. No MFiX equivalent (MFiX solves its momentum on a
-    staggered grid). gasVelocityFromFlux (with faceInterpolatedDrag) removes
-    the layering MPPICFoam's form gives a bubbling bed (rows alternating
-    between close pack and 0.42, the packed rows' gas velocity a fifth of
-    the one continuity asks), but that bed then leans on the packing model
-    for 9 % of its weight (docs/VALIDATION.md): off by default.
+    The face coefficient: where the drag coefficient A jumps, between a
+    packed cell and the freeboard or a fixed-velocity inflow, or at the
+    edge of a falling mixture, the face's resistance is that of its two
+    half cells in series, 1/interpolate(A); MPPICFoam's interpolate(1/A)
+    adds their conductances as if in parallel and lets the gas cross the
+    face as if the dense side had half its particles. A fixed bed 20 cells
+    high at 0.12 m/s (tutorials/validation/minimumFluidization) gets 0.993
+    of Ergun's pressure drop and its first row its exact interstitial
+    velocity, against 0.963 and 0.51 of it with MPPICFoam's form. No MFiX
+    equivalent (MFiX solves its momentum on a staggered grid).
 
-    With semi-implicit drag the gas takes the drag at its new velocity and
-    the parcels took it at the old one; in beds whose parcels cross cells
-    the difference keeps one sign. The parcels then get more drag than the
-    gas's pressure drop shows: 0.06-0.08 of the bed's weight in the uniform
-    bed at 3 parcels per packed cell and in the Kuipers jet with
-    pushThrough. balanceImplicitDrag removes the difference. It is off by
-    default, so that the solver gives stock MPPICFoam's answer, which keeps
-    the difference; tutorials/kuipersJet turns it on (with
-    coloringFunction's pushThrough).
+    The drag balance: with semi-implicit drag the gas takes the drag at its
+    new velocity and the parcels took it at the old one; in beds whose
+    parcels cross cells the difference keeps one sign, and the parcels got
+    more drag than the gas's pressure drop shows (0.06-0.08 of the bed's
+    weight in the uniform bed at 3 parcels per packed cell and in the
+    Kuipers jet). The balance removes the difference.
 
 \*---------------------------------------------------------------------------*/
 

@@ -33,13 +33,13 @@ Description
        A parcel of row 1 at (0.125, 0.45, 0.05), U = (0 -2 0): grad_y =
        (0 - 9)/0.25 = -36 Pa/m (row 2 empty), dU_y = 1e-3*36/(2500*0.3) =
        4.8e-5 m/s, below the reflection (1.85 m/s): U'_y = -2 + 4.8e-5.
-       Our capacity limit (on by default): with the case's step of 1 s the
-       entering parcel crossed cell 0's top face in this step (its
+       Our capacity limit, capacityLimit refuse: with the case's step of
+       1 s the entering parcel crossed cell 0's top face in this step (its
        displacement 1 m exceeds its 0.05 m from the face), and cell 0
        started above close pack (0.62 > 0.6), so it takes no entrant: the
        correction move takes the parcel back across y = 0.25 into cell 4
        and not past cell 4's centre (0.05 <= dX_y <= 0.175), and it keeps
-       U'_y = 0.85 (away from cell 0). With capacityLimit false (MFiX 21.3
+       U'_y = 0.85 (away from cell 0). With capacityLimit none (MFiX 21.3
        as is) the correction is U' - U = 1.85 and the parcel's velocity is
        not touched; the same-step-mean check uses that model.
        The stress at the cap: tau(0.9) = tau(min(0.995, 0.69)) =
@@ -58,13 +58,13 @@ Description
          1/tau_x = 16/sqrt(3 pi) 0.3 * 1/(r/3) * 2 * (1 - 0.85^2)/4,
        U_x = 1 after dt 1e-3: (1 + r*2)/(1 + r), r = dt/(2 tau_x).
 
-    5. conserveMomentum (ours), capacityLimit false: rows 0 and 1 as in 2,
-       at rest but for the row-1 parcel at (0.125, 0.45, 0.05) falling at
-       2 m/s, mean velocities 0: its impulse dU_y = 4.8e-5 m/s comes from
-       row 0 (the gradient points down, at cell 0). At the end of the step
-       the pack takes it back as in a collision: the parcel (mass m) keeps
-       f dU, f = M/(M + m), cell 0's parcel (mass M) takes -f m dU/M, and
-       their momentum is -2 m as before.
+    5. conserveMomentum packs (ours), capacityLimit none: rows 0 and 1 as
+       in 2, at rest but for the row-1 parcel at (0.125, 0.45, 0.05)
+       falling at 2 m/s, mean velocities 0: its impulse dU_y = 4.8e-5 m/s
+       comes from row 0 (the gradient points down, at cell 0). At the end
+       of the step the pack takes it back as in a collision: the parcel
+       (mass m) keeps f dU, f = M/(M + m), cell 0's parcel (mass M) takes
+       -f m dU/M, and their momentum is -2 m as before.
 
     6. Release of an over-packed cell (releaseAbove 0.65, close pack 0.6):
        in a cell at alpha 0.68, r = 0.005, dt 1e-3, grad tau = (3 -4 0):
@@ -79,13 +79,25 @@ Description
        from the wall it reaches, (2 0 0), is kept; in cell 5 (no boundary
        face) U is kept.
 
-    8. conserveMomentum with the capacity limit: item 2's refused entrant
-       (one particle) moves as without conserveMomentum, but its velocity
-       is written once, at the end of the step (cacheFields false), not by
-       velocityCorrection (-1 until then): the kept 0.85 less the share
-       cell 0's pack (n0 particles, at rest) takes of the impulse 1.85 the
-       parcel was given, f = n0/(n0 + 1): 0.85 - (1 - f) 1.85 =
-       0.85 - 1.85/(n0 + 1), n0 = 0.62*0.00625/(pi 1e-6/6) = 7400.6.
+    8. conserveMomentum packs with capacityLimit refuse: item 2's refused
+       entrant (one particle) moves as without conserveMomentum, but its
+       velocity is written once, at the end of the step (cacheFields
+       false), not by velocityCorrection (-1 until then): the kept 0.85
+       less the share cell 0's pack (n0 particles, at rest) takes of the
+       impulse 1.85 the parcel was given, f = n0/(n0 + 1):
+       0.85 - (1 - f) 1.85 = 0.85 - 1.85/(n0 + 1),
+       n0 = 0.62*0.00625/(pi 1e-6/6) = 7400.6.
+
+    9. capacityLimit refuse and push (push-through), in coloringFunction
+       and mfixSnider: pushThroughChecks.C.
+
+    10. Bad input, in coloringFunction and mfixSnider, each a
+       FatalIOError: capacityLimit true or false -> naming the keyword, the
+       value and push, refuse, none; conserveMomentum true -> naming the
+       keyword, the value and none, packs, gas; conserveMomentum gas in
+       mfixSnider -> naming the keyword, gas and none, packs; pushThrough,
+       followDrainingPacks, supportAngle, packAtClosePack and
+       freePackReactionsToGas -> an unknown keyword, named.
 
 \*---------------------------------------------------------------------------*/
 
@@ -180,6 +192,7 @@ void testLimiterAndMean(cloudType& cloud, const fvMesh& mesh)
 
     dictionary coeffs(sniderCoeffs());
     coeffs.add("slipVelocityFactor", 1);
+    coeffs.add("capacityLimit", word("refuse"));
     autoPtr<PackingModel<cloudType>> model(newSniderModel(cloud, coeffs));
 
     // The previous step's mean: row 0 at rest, row 1 falling
@@ -209,7 +222,7 @@ void testLimiterAndMean(cloudType& cloud, const fvMesh& mesh)
     );
     checkClose("entering parcel: no x change", dEntering.x(), 0, 1e-12, 1);
 
-    // Our capacity limit (on by default): the parcel crossed into cell 0
+    // Our capacity limit (refuse): the parcel crossed into cell 0
     // through its top face within the case's step (1 s), and cell 0
     // started above close pack (0.62), so it takes no entrant: the
     // correction move takes the parcel back into cell 4, the cell it came
@@ -230,18 +243,18 @@ void testLimiterAndMean(cloudType& cloud, const fvMesh& mesh)
         dt*dEntering.y() >= 0.05 && dt*dEntering.y() <= 0.175
     );
 
-    // MFiX 21.3 as is (capacityLimit false): the correction is U' - U and
+    // MFiX 21.3 as is (capacityLimit none): the correction is U' - U and
     // the parcel's velocity is not touched
     dictionary asIs(coeffs);
-    asIs.add("capacityLimit", false);
+    asIs.set("capacityLimit", word("none"));
     autoPtr<PackingModel<cloudType>> mfix(newSniderModel(cloud, asIs));
     mfix->cacheFields(true);
     entering->U() = vector(0, -1, 0);
     const vector dAsIs = mfix->velocityCorrection(*entering, dt);
-    checkClose("capacityLimit false: dU_y = 0.85 + 1", dAsIs.y(), 1.85, 1e-12);
+    checkClose("capacityLimit none: dU_y = 0.85 + 1", dAsIs.y(), 1.85, 1e-12);
     checkClose
     (
-        "capacityLimit false: the velocity is not touched",
+        "capacityLimit none: the velocity is not touched",
         entering->U().y(), -1, 1e-12
     );
 
@@ -306,6 +319,7 @@ int main(int argc, char *argv[])
     testConserveMomentum(cloud, mesh);
     testGivenAtStepEnd(cloud, mesh);
     testPushThrough(cloud, mesh);
+    testBadInput(cloud);
 
     return summary();
 }

@@ -3,9 +3,10 @@
     This file is part of the mppicModels project, GPL-3.0-or-later.
 -------------------------------------------------------------------------------
 Description
-    Test-mfixSnider's check of pushThrough (hand values), in
-    coloringFunction and in mfixSnider (pSolid 0: no stress impulse, so
-    the capacity limit's moves alone; the same hand values).
+    Test-mfixSnider's check of capacityLimit refuse and push (push-through;
+    hand values), in coloringFunction and in mfixSnider (pSolid 0: no
+    stress impulse, so the capacity limit's moves alone; the same hand
+    values); holdSupportedPacks false.
     Cells 0.25 x 0.25 x 0.1. Rows 1 and 2 of the box are full, and row 0
     but for column 0: 5 parcels of 0.12 of a cell in each cell (0.60; at
     close pack 0.62 a sixth does not fit: 0.12 > 0.02 + 0.5*0.12), at
@@ -13,10 +14,10 @@ Description
     is empty. In the box's step (1 s) a sixth parcel rose into column 0,
     row 1, from column 0, row 0 (U = (0 1 0)), and another fell into
     column 3, row 2, from row 3 (U = (0 -1 0)).
-    - pushThrough false: both are refused; their correction moves take
+    - capacityLimit refuse: both are refused; their correction moves take
       them back out (|dX_y| > 0.05, their distance to the face), and no
       parcel of the full rows leaves its cell.
-    - pushThrough true: the nearest cells with room, through full cells
+    - capacityLimit push: the nearest cells with room, through full cells
       and not back where the parcel came from, are two steps away: for the
       rising parcel column 0, row 3 (every other cell within two steps is
       full), so rows 1 and 2 of column 0 each push their highest parcel
@@ -25,12 +26,12 @@ Description
       column 2, row 2, whose highest parcel (x = 0.625, y = 0.71) is
       pushed up by the same 0.0425. Both entrants are admitted (they stay
       in their rows).
-    - pushThrough true with the two highest parcels of column 2, row 2
-      level: the fourth at (0.6, 0.71 - 1e-12), the fifth at (0.65, 0.71),
-      within 1e-9 of the 0.25 between the cells: the fourth, made first
-      and so of the lower origId, is pushed (dX_y 0.0425 + 1e-12), the
-      fifth stays in its row (without the rule for level parcels the fifth
-      went, by its 1e-12).
+    - capacityLimit not given (push, the default) with the two highest
+      parcels of column 2, row 2 level: the fourth at (0.6, 0.71 - 1e-12),
+      the fifth at (0.65, 0.71), within 1e-9 of the 0.25 between the
+      cells: the fourth, made first and so of the lower origId, is pushed
+      (dX_y 0.0425 + 1e-12), the fifth stays in its row (it is not the
+      one pushed for being higher by 1e-12).
 
 \*---------------------------------------------------------------------------*/
 
@@ -100,7 +101,10 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
             dictionary coeffs;
             coeffs.add("closePackFraction", 0.62);
             coeffs.add("holdSupportedPacks", false);
-            coeffs.add("pushThrough", push);
+            if (!level)
+            {
+                coeffs.add("capacityLimit", word(push ? "push" : "refuse"));
+            }
             if (modelName == "mfixSnider")
             {
                 coeffs.add("pSolid", 0.0);
@@ -115,8 +119,8 @@ void testPushThrough(cloudType& cloud, const fvMesh& mesh)
 
             const word tag = modelName + ", "
               + (
-                    level ? "pushThrough true, level parcels: "
-                  : push ? "pushThrough true: " : "pushThrough false: "
+                    level ? "capacityLimit (default push), level parcels: "
+                  : push ? "capacityLimit push: " : "capacityLimit refuse: "
                 );
             const vector fall = dt*model->velocityCorrection(*falling, dt);
             if (push)

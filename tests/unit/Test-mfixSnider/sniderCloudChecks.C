@@ -141,8 +141,8 @@ void testConserveMomentum(cloudType& cloud, const fvMesh& mesh)
 
     dictionary coeffs;
     coeffs.add("closePackFraction", 0.6);
-    coeffs.add("capacityLimit", false);
-    coeffs.add("conserveMomentum", true);
+    coeffs.add("capacityLimit", word("none"));
+    coeffs.add("conserveMomentum", word("packs"));
     autoPtr<PackingModel<cloudType>> model(newSniderModel(cloud, coeffs));
     mesh.lookupObjectRef<volVectorField>("kinematicCloud:UMean") ==
         dimensionedVector(dimVelocity, Zero);
@@ -188,7 +188,7 @@ void testGivenAtStepEnd(cloudType& cloud, const fvMesh& mesh)
     const scalar n0 = 0.62*Vcell/Vp;
     const scalar dt = 1e-3;
 
-    // Item 2's bed with capacityLimit (default) and conserveMomentum
+    // Item 2's bed with capacityLimit refuse and conserveMomentum packs
     parcelType* entering =
         newParcel(mesh, point(0.125, 0.2, 0.05), vector(0, -1, 0), 1);
     cloud.addParticle(entering);
@@ -196,7 +196,8 @@ void testGivenAtStepEnd(cloudType& cloud, const fvMesh& mesh)
 
     dictionary coeffs(sniderCoeffs());
     coeffs.add("slipVelocityFactor", 1);
-    coeffs.add("conserveMomentum", true);
+    coeffs.add("capacityLimit", word("refuse"));
+    coeffs.add("conserveMomentum", word("packs"));
     autoPtr<PackingModel<cloudType>> model(newSniderModel(cloud, coeffs));
 
     volVectorField& Us =
@@ -234,6 +235,69 @@ void testGivenAtStepEnd(cloudType& cloud, const fvMesh& mesh)
         "0.85 - 1.85/(n0 + 1)",
         entering->U().y(), 0.85 - 1.85/(n0 + 1), 1e-12
     );
+}
+
+
+void testBadInput(cloudType& cloud)
+{
+    cloud.clear();
+    for (const word modelName : {"coloringFunction", "mfixSnider"})
+    {
+        const word coeffsName(modelName + "Coeffs");
+        const auto rejects = [&]
+        (
+            const word& keyword,
+            const word& value,
+            const wordList& named
+        )
+        {
+            dictionary coeffs;
+            coeffs.add("closePackFraction", 0.6);
+            coeffs.add(keyword, value);
+            checkTrue
+            (
+                modelName + ", " + keyword + " " + value + ": FatalIOError",
+                raisesError
+                (
+                    [&]() { newPackingModel(cloud, modelName, coeffs); },
+                    named
+                )
+            );
+        };
+
+        for (const word value : {"true", "false"})
+        {
+            rejects
+            (
+                "capacityLimit", value,
+                {coeffsName, "capacityLimit", value, "push", "refuse", "none"}
+            );
+        }
+        rejects
+        (
+            "conserveMomentum", "true",
+            {coeffsName, "conserveMomentum", "true", "none", "packs", "gas"}
+        );
+        if (modelName == "mfixSnider")
+        {
+            rejects
+            (
+                "conserveMomentum", "gas",
+                {coeffsName, "conserveMomentum", "gas", "none", "packs"}
+            );
+        }
+        for
+        (
+            const word keyword
+          : {
+                "pushThrough", "followDrainingPacks", "supportAngle",
+                "packAtClosePack", "freePackReactionsToGas"
+            }
+        )
+        {
+            rejects(keyword, "true", {coeffsName, "unknown", keyword});
+        }
+    }
 }
 
 // ************************************************************************* //

@@ -25,12 +25,9 @@ Description
     normal . gHat = 0.707 > 0.1) and the x-min face of each cell, with
     equal weights (areas 0.025 each, both 0.707): a cell is held when one
     of the two rests on support (at least half of the weight). The walls
-    are then 45 degrees from the horizontal: with the default supportAngle
-    40 (cos 0.766 > 0.707) they do not hold, none held. With supportAngle
-    50 (cos 0.643): every cell full, all 32 are held (column 0 rests on
-    the x-min wall, row 0 on the bottom); only column 3 full: row 0 of
-    column 3 rests on the bottom (half the weight) -> held; row j > 0:
-    bottom neighbour held (half) -> held: 8 held.
+    are then 45 degrees from the horizontal, steeper than the 40 degrees
+    a support face may be (cos 0.766 > 0.707): with every cell full none
+    is held.
     g = 0 -> none held.
     restingVelocity, g down: U = (1 -2 0.5) -> (1 0 0.5);
       U = (1 2 0) unchanged.
@@ -52,11 +49,10 @@ Description
         -1.5 (kept 0);
       a step of dt 0.2 > drainTime (weight 1), cell 0's parcel down
         again: d = 0.25/(2*0.2) = 0.625;
-      the field packDrain holds d (cell 0: 0.625, cell 1: 0); without
-        followDrainingPacks 0.
+      the field packDrain holds d (cell 0: 0.625, cell 1: 0); a
+        PackDrain made off (no held packs) gives 0.
     Bad input: supportPatches (nowhere) -> FatalIOError naming the
-    keyword, the value and the patches allowed; supportAngle 0 and 95 ->
-    FatalIOError naming the keyword, the value and (0, 90].
+    keyword, the value and the patches allowed.
 
     The capacity limit's room (cellRoom::fits, v <= room + 0.5 v), by
     hand, for parcels of 0.12 of a unit cell and close pack 0.62:
@@ -107,10 +103,7 @@ void checkPackDrain(const fvMesh& mesh)
 {
     const scalar v = 1e-9;
 
-    dictionary coeffs;
-    coeffs.name() = "coloringFunctionCoeffs";
-    coeffs.add("followDrainingPacks", true);
-    PackDrain drain(mesh, coeffs);
+    PackDrain drain(mesh, true);
 
     drain.startTally();
     drain.add(0, v, 0.25);
@@ -139,9 +132,8 @@ void checkPackDrain(const fvMesh& mesh)
     checkClose("packDrain field, cell 0", field[0], 0.625);
     checkTrue("packDrain field, cell 1: 0", field[1] == 0);
 
-    dictionary off;
-    PackDrain none(mesh, off);
-    checkTrue("followDrainingPacks false: 0", none.velocity(0) == 0);
+    PackDrain none(mesh, false);
+    checkTrue("PackDrain off (no held packs): 0", none.velocity(0) == 0);
 }
 
 
@@ -190,37 +182,14 @@ int main(int argc, char *argv[])
     );
     checkTrue("g up, top: 15 held", countHeld(hanging, nCells) == 15);
 
-    // Gravity 45 degrees from the walls: with the default supportAngle 40
-    // the walls are too steep to hold; with supportAngle 50 they hold
+    // Gravity 45 degrees from the walls: steeper than the 40 degrees a
+    // support face may be, so the walls do not hold
     const vector gSlant(-9.81/Foam::sqrt(2.0), -9.81/Foam::sqrt(2.0), 0);
     support.update(gSlant, boolList(nCells, true));
     checkTrue
     (
-        "g slanted 45, supportAngle 40: walls too steep, none held",
+        "g slanted 45 (support faces up to 40): walls too steep, none held",
         countHeld(support, nCells) == 0
-    );
-
-    dictionary wide;
-    wide.add("supportAngle", 50.0);
-    PackSupport leaning(mesh, wide);
-    leaning.update(gSlant, boolList(nCells, true));
-    checkTrue
-    (
-        "g slanted 45, supportAngle 50, all full: 32 held",
-        countHeld(leaning, nCells) == 32
-    );
-
-    boolList lastColumn(nCells, false);
-    for (label row = 0; row < 8; ++row)
-    {
-        lastColumn[3 + 4*row] = true;
-    }
-    leaning.update(gSlant, lastColumn);
-    checkTrue
-    (
-        "g slanted 45, supportAngle 50, column 3 full: all 8 of it held",
-        heldRows(leaning, 3, {0, 1, 2, 3, 4, 5, 6, 7})
-     && countHeld(leaning, nCells) == 8
     );
 
     support.update(Zero, full);
@@ -309,22 +278,6 @@ int main(int argc, char *argv[])
             {"supportPatches", "nowhere", "bottom", "top", "walls"}
         )
     );
-
-    for (const scalar angle : {0.0, 95.0})
-    {
-        dictionary badAngle;
-        badAngle.name() = "coloringFunctionCoeffs";
-        badAngle.add("supportAngle", angle);
-        checkTrue
-        (
-            "supportAngle " + Foam::name(angle) + ": FatalIOError",
-            raisesError
-            (
-                [&]() { PackSupport bad(mesh, badAngle); },
-                {"supportAngle", Foam::name(angle), "(0, 90]"}
-            )
-        );
-    }
 
     // The capacity limit's room
     {

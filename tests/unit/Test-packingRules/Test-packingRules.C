@@ -11,12 +11,9 @@ Description
     coloringFunctionRules, alpha_cp = 0.6, e1 = 0.5, e2 = 0.9,
     g = (0 -9.81 0); U intermediate velocity, us mean solids velocity,
     dV impulse direction -grad(chi):
-      eq 18: chi(0.59) = 0, chi(0.6) = 0.6, chi(0.65) = 0.65; by default
-          (packAtClosePack true, at close pack to 1e-9):
-          chi(0.6/(1 + 1e-10)) = 0.6/(1 + 1e-10), chi(0.6*(1 - 1e-8)) = 0,
-          and the same with packAtClosePack true written out;
-          packAtClosePack false: chi(0.6) = 0, chi(0.6*(1 + 1e-10)) = 0,
-          chi(0.6*(1 + 1e-8)) = 0.6*(1 + 1e-8)
+      eq 18: chi(0.59) = 0, chi(0.6) = 0.6, chi(0.65) = 0.65; a cell at
+          close pack to 1e-9 is a pack:
+          chi(0.6/(1 + 1e-10)) = 0.6/(1 + 1e-10), chi(0.6*(1 - 1e-8)) = 0
       approach, eq 20: dV = (1 0 0), U = (-2 0.3 0), us = (0.5 0 0):
           Urel = (-2.5 0.3 0), U' = us - 0.5*Urel = (1.75 -0.15 0)
       separation: U = (2 0 0), same us, dV: unchanged
@@ -153,39 +150,14 @@ void testColoringFunction()
     checkClose("chi(0.6)", rules.colour(0.6), 0.6);
     checkClose("chi(0.65)", rules.colour(0.65), 0.65);
     // a full cell at close pack: 5 parcels of 0.12 in a cell 1e-10 larger
-    // than theirs (gmsh's points) make 0.6/(1 + 1e-10), a pack by default
-    // (as computed it was not); 1e-8 below close pack is not; false: only
-    // above it by more than 1e-9
-    dictionary atPackCoeffs(colouringCoeffs());
-    atPackCoeffs.add("packAtClosePack", true);
-    const coloringFunctionRules atPack(atPackCoeffs);
-    for (const coloringFunctionRules* r : {&rules, &atPack})
-    {
-        const string form(r == &rules ? "default" : "true");
-        checkClose
-        (
-            form + ": chi(0.6/(1 + 1e-10))", r->colour(0.6/(1 + 1e-10)),
-            0.6/(1 + 1e-10)
-        );
-        checkClose
-        (
-            form + ": chi(0.6*(1 - 1e-8))", r->colour(0.6*(1 - 1e-8)), 0, 0, 1
-        );
-    }
-    dictionary abovePackCoeffs(colouringCoeffs());
-    abovePackCoeffs.add("packAtClosePack", false);
-    const coloringFunctionRules abovePack(abovePackCoeffs);
-    checkClose("above only: chi(0.6)", abovePack.colour(0.6), 0, 0, 1);
+    // than theirs (gmsh's points) make 0.6/(1 + 1e-10), a pack; 1e-8 below
+    // close pack is not
     checkClose
     (
-        "above only: chi(0.6*(1 + 1e-10))",
-        abovePack.colour(0.6*(1 + 1e-10)), 0, 0, 1
+        "chi(0.6/(1 + 1e-10))", rules.colour(0.6/(1 + 1e-10)),
+        0.6/(1 + 1e-10)
     );
-    checkClose
-    (
-        "above only: chi(0.6*(1 + 1e-8))",
-        abovePack.colour(0.6*(1 + 1e-8)), 0.6*(1 + 1e-8)
-    );
+    checkClose("chi(0.6*(1 - 1e-8))", rules.colour(0.6*(1 - 1e-8)), 0, 0, 1);
 
     const colouringCase cases[] =
     {

@@ -8,12 +8,12 @@ writes packingMomentum.txt and prints it.
 Hand value: the layer alone moves at first, so the cloud's momentum is
     P0 = m_layer*U0,  m_layer = 0.15*(0.04*0.01*0.005 m3)*2500 kg/m3
        = 7.5e-4 kg,   U0 = (0.1, -0.5, 0) m/s  ->  P0 = (7.5e-5, -3.75e-4, 0).
-With no forces, only the packing model changes it: with conserveMomentum the
-pack takes the opposite impulse and P stays P0 to round-off while the
-collisions (e1 = 0.5) remove kinetic energy; without it, P changes by the
+With no forces, only the packing model changes it: with conserveMomentum
+packs the pack takes the opposite impulse and P stays P0 to round-off while the
+collisions (e1 = 0.5) remove kinetic energy; with none, P changes by the
 monitor's packing momentum summed over the steps.
 
-With freePackReactionsToGas (./Allrun gas) the packs, which no support
+With conserveMomentum gas (./Allrun gas) the packs, which no support
 holds here, hand their share to the gas: P + G stays P0, G the monitor's
 gasPackingMomentum summed over the steps. Hand bounds for G_y: each layer
 parcel is turned once by the pack at rest, dU_y = (1 + e1)*0.5 = 0.75 m/s,
@@ -93,12 +93,11 @@ def field_momentum(rows):
 
 
 def conserve_setting(path="constant/kinematicCloudProperties"):
-    return post.dict_entry(path, "conserveMomentum") in ("true", "on", "yes")
+    return post.dict_entry(path, "conserveMomentum") in ("packs", "gas")
 
 
 def to_gas_setting(path="constant/kinematicCloudProperties"):
-    return post.dict_entry(path, "freePackReactionsToGas") \
-        in ("true", "on", "yes")
+    return post.dict_entry(path, "conserveMomentum") == "gas"
 
 
 def norm(v):
@@ -129,8 +128,8 @@ def main(argv):
                          for _, f, m in fields)/scale
 
     lines = [
-        "conserveMomentum               %s" % ("true" if conserve else "false"),
-        "freePackReactionsToGas         %s" % ("true" if to_gas else "false"),
+        "conserveMomentum               %s"
+        % ("gas" if to_gas else "packs" if conserve else "none"),
         "steps                          %d" % len(momentum),
         "initial momentum [kg m/s]      (%.6e %.6e %.6e)" % tuple(momentum[0]),
         "hand value P0                  (%.6e %.6e %.6e)" % P0,

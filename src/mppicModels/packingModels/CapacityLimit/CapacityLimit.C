@@ -12,8 +12,25 @@
 template<class CloudType>
 const Foam::wordList Foam::CapacityLimit<CloudType>::keywords
 ({
-    "supportPatches", "supportAngle", "pushThrough", "followDrainingPacks"
+    "supportPatches", "capacityLimit"
 });
+
+
+template<class CloudType>
+Foam::word Foam::CapacityLimit<CloudType>::mode(const dictionary& coeffs)
+{
+    const wordList allowed({"push", "refuse", "none"});
+    const word value(coeffs.lookupOrDefault<word>("capacityLimit", "push"));
+
+    if (!allowed.found(value))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Dictionary " << coeffs.name()
+            << ", keyword capacityLimit: value " << value
+            << " is not one of " << allowed << exit(FatalIOError);
+    }
+    return value;
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -29,21 +46,10 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
     holdSupportedPacks_(holdSupportedPacks),
     entries_(),
     support_(mesh, coeffs),
-    drain_(mesh, coeffs),
+    drain_(mesh, holdSupportedPacks),
     resting_()
 {
-    entries_.setPushThrough(coeffs.lookupOrDefault("pushThrough", false));
-
-    // The drain acts on held parcels only: asked for without them, it
-    // would be measured and written but change nothing
-    if (drain_.on() && !holdSupportedPacks_)
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Dictionary " << coeffs.name()
-            << ", keyword followDrainingPacks: value true needs held packs"
-            << " (holdSupportedPacks true and capacityLimit true)"
-            << exit(FatalIOError);
-    }
+    entries_.setPushThrough(mode(coeffs) == "push");
 }
 
 

@@ -25,8 +25,8 @@ template<class CloudType>
 const Foam::wordList
 Foam::PackingModels::ColoringFunction<CloudType>::keywords
 ({
-    "closePackFraction", "e1", "e2", "case1a", "case1b", "packAtClosePack",
-    "reflection", "impulse", "capacityLimit", "holdSupportedPacks"
+    "closePackFraction", "e1", "e2", "case1a", "case1b",
+    "reflection", "impulse", "holdSupportedPacks"
 });
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -49,7 +49,7 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
             impulseType::neighbour
         )
     ),
-    capacityLimit_(this->coeffs().lookupOrDefault("capacityLimit", true)),
+    capacityLimit_(CapacityLimit<CloudType>::mode(this->coeffs()) != "none"),
     limit_
     (
         owner.mesh(),

@@ -23,24 +23,9 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     // particleStressModel entry, which these models do not use
     PackingModel<CloudType>(owner),
     coeffs_(checkedCoeffs(dict, type, modelKeywords)),
-    conserveMomentum_
-    (
-        coeffs_.template lookupOrDefault<bool>("conserveMomentum", false)
-    ),
-    freePackReactionsToGas_
-    (
-        coeffs_.template lookupOrDefault<bool>("freePackReactionsToGas", false)
-    )
-{
-    // Without conserveMomentum no pack takes a reaction to hand on
-    if (freePackReactionsToGas_ && !conserveMomentum_)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Dictionary " << coeffs_.name()
-            << ", keyword freePackReactionsToGas: value true needs"
-            << " conserveMomentum true" << exit(FatalIOError);
-    }
-}
+    conserveMomentum_(readConserveMomentum(coeffs_) != "none"),
+    freePackReactionsToGas_(readConserveMomentum(coeffs_) == "gas")
+{}
 
 
 template<class CloudType>

@@ -3,9 +3,9 @@
     This file is part of the mppicModels project, GPL-3.0-or-later.
 -------------------------------------------------------------------------------
 Description
-    The keywords of <type>Coeffs read by the base, and the one check of
-    every entry of that dictionary (the model's, the base's and
-    CapacityLimit's keywords).
+    The keywords of <type>Coeffs read by the base, the one check of every
+    entry of that dictionary (the model's, the base's and CapacityLimit's
+    keywords), and the base's conserveMomentum.
 
 \*---------------------------------------------------------------------------*/
 
@@ -18,7 +18,7 @@ template<class CloudType>
 const Foam::wordList
 Foam::PackingModels::MfixPackingModel<CloudType>::keywords
 ({
-    "conserveMomentum", "freePackReactionsToGas"
+    "conserveMomentum"
 });
 
 
@@ -41,6 +41,27 @@ Foam::PackingModels::MfixPackingModel<CloudType>::checkedCoeffs
 
     mppicCoefficients::checkKeywords(coeffs, valid, type);
     return coeffs;
+}
+
+
+template<class CloudType>
+Foam::word
+Foam::PackingModels::MfixPackingModel<CloudType>::readConserveMomentum
+(
+    const dictionary& coeffs
+)
+{
+    const wordList allowed({"none", "packs", "gas"});
+    const word value(coeffs.lookupOrDefault<word>("conserveMomentum", "none"));
+
+    if (!allowed.found(value))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Dictionary " << coeffs.name()
+            << ", keyword conserveMomentum: value " << value
+            << " is not one of " << allowed << exit(FatalIOError);
+    }
+    return value;
 }
 
 

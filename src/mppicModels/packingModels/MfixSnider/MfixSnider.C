@@ -14,7 +14,7 @@ const Foam::wordList
 Foam::PackingModels::MfixSnider<CloudType>::keywords
 ({
     "closePackFraction", "pSolid", "gamma", "eps", "e1",
-    "slipVelocityFactor", "releaseAbove", "collisionDamping", "capacityLimit",
+    "slipVelocityFactor", "releaseAbove", "collisionDamping",
     "holdSupportedPacks"
 });
 
@@ -29,26 +29,13 @@ Foam::PackingModels::MfixSnider<CloudType>::checkedCoeffs
 )
 {
     // The gas cannot take the limiter's reactions at once: on MFiX-PIC's
-    // deposit the uniform bed's gas diverged within 0.04 s (issue 21)
-    if (coeffs.lookupOrDefault<bool>("freePackReactionsToGas", false))
+    // deposit the uniform bed's gas diverged within 0.04 s
+    if (coeffs.lookupOrDefault<word>("conserveMomentum", "none") == "gas")
     {
         FatalIOErrorInFunction(coeffs)
             << "Dictionary " << coeffs.name()
-            << ", keyword freePackReactionsToGas: value true is not"
-            << " available with mfixSnider (allowed: false)"
-            << exit(FatalIOError);
-    }
-    // Without the capacity limit nothing is refused, so nothing is pushed
-    if
-    (
-        coeffs.lookupOrDefault<bool>("pushThrough", false)
-     && !coeffs.lookupOrDefault<bool>("capacityLimit", true)
-    )
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Dictionary " << coeffs.name()
-            << ", keyword pushThrough: value true needs capacityLimit true"
-            << " (allowed with capacityLimit false: false)"
+            << ", keyword conserveMomentum: value gas is not"
+            << " available with mfixSnider (allowed: none, packs)"
             << exit(FatalIOError);
     }
     return coeffs;
@@ -70,10 +57,7 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
     (
         this->coeffs().template lookupOrDefault<bool>("collisionDamping", false)
     ),
-    capacityLimit_
-    (
-        this->coeffs().template lookupOrDefault<bool>("capacityLimit", true)
-    ),
+    capacityLimit_(CapacityLimit<CloudType>::mode(this->coeffs()) != "none"),
     stressGradient_(owner.mesh()),
     cellAlpha_(),
     damping_(rules_.e1(), rules_.closePackFraction()),

@@ -8,10 +8,10 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::PackDrain::PackDrain(const fvMesh& mesh, const dictionary& coeffs)
+Foam::PackDrain::PackDrain(const fvMesh& mesh, const bool on)
 :
     mesh_(mesh),
-    on_(coeffs.lookupOrDefault("followDrainingPacks", false)),
+    on_(on),
     moved_(),
     solids_()
 {
@@ -51,7 +51,7 @@ Foam::volScalarField& Foam::PackDrain::drain() const
 
         if (drain_->headerOk())
         {
-            Info<< "followDrainingPacks: the packs' drain read from "
+            Info<< "PackDrain: the packs' drain read from "
                 << drain_->objectPath() << endl;
         }
     }

@@ -17,7 +17,7 @@ Foam::PackSupport::PackSupport(const fvMesh& mesh, const dictionary& coeffs)
 :
     mesh_(mesh),
     supportPatch_(mesh.boundaryMesh().size(), false),
-    cosSupportAngle_(readCosSupportAngle(coeffs)),
+    cosSupportAngle_(Foam::cos(degToRad(supportAngle))),
     gHat_(Zero),
     lowerFaces_(),
     lowerWeights_(),
@@ -76,22 +76,6 @@ void Foam::PackSupport::readSupportPatches(const dictionary& coeffs)
                 << allowed << exit(FatalIOError);
         }
     }
-}
-
-
-Foam::scalar Foam::PackSupport::readCosSupportAngle(const dictionary& coeffs)
-{
-    const scalar angle = coeffs.lookupOrDefault<scalar>("supportAngle", 40);
-
-    if (!(angle > 0 && angle <= 90))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Dictionary " << coeffs.name() << ", keyword supportAngle: "
-            << "value " << angle << " is outside (0, 90] degrees"
-            << exit(FatalIOError);
-    }
-
-    return Foam::cos(degToRad(angle));
 }
 
 

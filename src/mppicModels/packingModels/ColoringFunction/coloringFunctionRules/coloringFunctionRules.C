@@ -33,7 +33,6 @@ Foam::coloringFunctionRules::coloringFunctionRules(const dictionary& coeffs)
     ),
     case1a_(coeffs.lookupOrDefault<bool>("case1a", true)),
     case1b_(coeffs.lookupOrDefault<bool>("case1b", true)),
-    packAtClosePack_(coeffs.lookupOrDefault<bool>("packAtClosePack", true)),
     reflection_(readReflection(coeffs))
 {}
 
