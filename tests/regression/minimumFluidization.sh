@@ -2,8 +2,9 @@
 #------------------------------------------------------------------------------
 # minimumFluidization <runDir>
 # The fixed-bed branch of tutorials/validation/minimumFluidization
-# (coloringFunction, Gidaspow's law, close pack 0.62, a bed 0.2 m = 20
-# cells high, 10 parcels per cell instead of 20 to keep it short): the inlet
+# (coloringFunction, Gidaspow's law, close pack 0.62 by -closePack instead
+# of the case's 0.56, a bed 0.2 m = 20 cells high, 10 parcels per cell
+# instead of 20 to keep it short): the inlet
 # velocity ramps from 0 to 0.12 m/s (2/3 of the measured Umf 0.182 m/s)
 # over 0.6 s, about 1 minute.
 # Checks: the bed does not move (Ergun's pressure drop at 0.12 m/s is 0.64
@@ -44,7 +45,7 @@ do
     [ "$(grep -c "^ *conserveMomentum $conserve;" \
         "$case/constant/kinematicCloudProperties")" = 2 ] \
         || { echo "FAIL conserveMomentum $conserve not set"; exit 1; }
-    runAllrun "$case" -packing $packing -ramp 0.6 0.12 -parcelsPerCell 10 \
+    runAllrun "$case" -packing $packing -ramp 0.6 0.12 -parcelsPerCell 10 -closePack 0.62 \
         || exit 1
 
     echo "$packing, conserveMomentum $conserve:"
