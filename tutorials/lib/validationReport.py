@@ -9,7 +9,8 @@ page is written beside it, as DIR/../VALIDATION.md.
 Reads the case list tutorials/validationCases (bin/validate's) and each
 case's record docs/validation/<case>.json (validationRecord.py), and writes
 docs/VALIDATION.md: a summary table of every case (figures met, commit),
-then per case its table (figure, reference, MFiX-PIC, ours, goal, met),
+the options the defaults leave off with what they change
+(tutorials/validationTradeOffs, measured by hand), then per case its table (figure, reference, MFiX-PIC, ours, goal, met),
 the command, the settings, and its plots (docs/validation/<png>). A case
 whose record was made on code older than the last change to src/,
 applications/ or its tutorial (results scripts and READMEs aside) is
@@ -37,6 +38,24 @@ def read_cases(project):
         cases.append(dict(zip(("name", "tutorial", "allrun", "results",
                                "title", "length"), fields)))
     return cases
+
+
+def read_trade_offs(project):
+    """(option, case, with it, on the defaults, commit) per line of
+    tutorials/validationTradeOffs; none without the file."""
+    path = os.path.join(project, "tutorials", "validationTradeOffs")
+    rows = []
+    if not os.path.exists(path):
+        return rows
+    for line in open(path):
+        line = line.strip()
+        if not line or line.startswith("#"):
+            continue
+        fields = [f.strip() for f in line.split("|")]
+        if len(fields) != 5:
+            sys.exit("%s: expected 5 fields separated by |: %s" % (path, line))
+        rows.append(fields)
+    return rows
 
 
 def git(project, *args):
@@ -166,6 +185,22 @@ def main():
             record["commit"], "" if current else " (older)",
             record["date"]))
     out.append("")
+    trade_offs = read_trade_offs(project)
+    if trade_offs:
+        out += [
+            "## Options the defaults leave off",
+            "",
+            "Each option below helps some case and harms another; the "
+            "defaults are the setting the matrix as a whole is best served "
+            "by. Measured with the option set and everything else the "
+            "defaults (tutorials/validationTradeOffs).",
+            "",
+            "| option | case | with the option | on the defaults | commit |",
+            "|---|---|---|---|---|",
+        ]
+        out += ["| %s |" % " | ".join(cell(f) for f in row)
+                for row in trade_offs]
+        out.append("")
     for case in cases:
         out += case_section(project, case, records[case["name"]],
                             os.path.basename(records_dir))
