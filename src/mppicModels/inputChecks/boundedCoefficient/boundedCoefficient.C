@@ -166,6 +166,27 @@ Foam::Ostream& Foam::mppicCoefficients::operator<<
 }
 
 
+Foam::word Foam::mppicCoefficients::readChoice
+(
+    const dictionary& dict,
+    const word& keyword,
+    const word& deflt,
+    const wordList& allowed
+)
+{
+    const word value(dict.lookupOrDefault<word>(keyword, deflt));
+
+    if (!allowed.found(value))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ", keyword " << keyword
+            << ": value " << value << " is not one of " << allowed
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
+
 void Foam::mppicCoefficients::checkKeywords
 (
     const dictionary& dict,

@@ -6,6 +6,7 @@
 #include "CapacityLimit.H"
 #include "cellRoom.H"
 #include "processorPolyPatch.H"
+#include "boundedCoefficient.H"
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
 
@@ -19,17 +20,10 @@ const Foam::wordList Foam::CapacityLimit<CloudType>::keywords
 template<class CloudType>
 Foam::word Foam::CapacityLimit<CloudType>::mode(const dictionary& coeffs)
 {
-    const wordList allowed({"push", "refuse", "none"});
-    const word value(coeffs.lookupOrDefault<word>("capacityLimit", "push"));
-
-    if (!allowed.found(value))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Dictionary " << coeffs.name()
-            << ", keyword capacityLimit: value " << value
-            << " is not one of " << allowed << exit(FatalIOError);
-    }
-    return value;
+    return mppicCoefficients::readChoice
+    (
+        coeffs, "capacityLimit", "push", {"push", "refuse", "none"}
+    );
 }
 
 

@@ -51,17 +51,10 @@ Foam::PackingModels::MfixPackingModel<CloudType>::readConserveMomentum
     const dictionary& coeffs
 )
 {
-    const wordList allowed({"none", "packs", "gas"});
-    const word value(coeffs.lookupOrDefault<word>("conserveMomentum", "none"));
-
-    if (!allowed.found(value))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Dictionary " << coeffs.name()
-            << ", keyword conserveMomentum: value " << value
-            << " is not one of " << allowed << exit(FatalIOError);
-    }
-    return value;
+    return mppicCoefficients::readChoice
+    (
+        coeffs, "conserveMomentum", "none", {"none", "packs", "gas"}
+    );
 }
 
 
