@@ -40,7 +40,7 @@ import checks
 from checks import report as check
 from mppicPost import internal_field
 
-props = open("constant/kinematicCloudProperties").read()
+props = re.sub(r"//.*", "", open("constant/kinematicCloudProperties").read())
 for what, pattern in (("packingModel mfixSnider", r"\n\s+packingModel\s+mfixSnider;"),
                       ("averagingMethod diffusion", r"\n\s+averagingMethod\s+diffusion;"),
                       ("bandwidth 0.014", r"\n\s+bandwidth\s+0.014;"),

@@ -3,9 +3,8 @@
 # implicitDragBalance <runDir>
 # tutorials/validation/uniformFluidization at 3 parcels per packed cell
 # (2880 parcels), 40 steps from the seeded bed with the fields written at
-# every step, PIMPLE balanceImplicitDrag false and the default, on
-# (mppicPimpleFoam; about 1 minute). Per step, the cloud's vertical
-# momentum budget
+# every step, PIMPLE balanceImplicitDrag off and on (mppicPimpleFoam; about
+# 1 minute). Per step, the cloud's vertical momentum budget
 #     R = (P_y(t) - P_y(t - dt))/(dt W) + 1 - J_pack/(dt W) - (deltaP - gas head)/(W/A)
 # (P_y the parcels' momentum from the written U, nParticle, d, rho; J_pack
 # the packing monitor's impulse of the step; deltaP from bedPressureDrop)
@@ -34,7 +33,7 @@ do
     case="$runDir/$mode"
     copyTutorial validation/uniformFluidization "$case"
     sed -i "s/^parcelsPerCell .*/parcelsPerCell  3;/" "$case/system/mppicSeedParcelsDict"
-    [ "$mode" = off ] && setEntry "$case" system/fvSolution PIMPLE/balanceImplicitDrag false
+    [ "$mode" = on ] && setEntry "$case" system/fvSolution PIMPLE/balanceImplicitDrag true
     # mesh and seed with the case's own Allrun (one step), then 40 steps
     # from the seeded bed with the fields at every step
     runAllrun "$case" 0.0005 > /dev/null || exit 1

@@ -36,11 +36,11 @@
 #     below close pack 0.62;
 #   - push-through prefers no direction the mesh's numbering gives: the bed
 #     and its mesh are mirror-symmetric in x and in z, so over the run the
-#     refused entrants pushed on toward -x and +x are as many within 5 %
-#     of their sum, and those toward -z and +z within 10 % (fewer: a fifth
-#     of the x pushes); with the first cell with room found (the lowest
-#     numbered) instead of pushOrderKey's choice, -x and +x were 10.9 %
-#     apart on a bed seeded at close pack.
+#     refused entrants pushed on toward -x and +x are as many within 2 %
+#     of their sum, and those toward -z and +z within 5 % (fewer: a sixth
+#     of the x pushes; measured 0.010 and 0.022); with the first cell with
+#     room found (the lowest numbered) instead of pushOrderKey's choice,
+#     -x and +x were 10.9 % apart on a bed seeded at close pack.
 # What this short window cannot show (the seed's 20-30 s: deltaP/weight >=
 # 0.90, the profiles within 0.035 / 0.058) is the validation matrix's:
 # bin/validate kuipersJet (docs/VALIDATION.md).
@@ -127,6 +127,6 @@ awk '
             ok ? "PASS" : "FAIL", a, n[a], b, n[b], d, tol
         return ok
     }
-    END { ok = balance("-x", "+x", 0.05); ok = balance("-z", "+z", 0.10) && ok; exit !ok }
+    END { ok = balance("-x", "+x", 0.02); ok = balance("-z", "+z", 0.05) && ok; exit !ok }
 ' log.mppicPimpleFoam || status=1
 exit $status

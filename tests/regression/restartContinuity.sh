@@ -5,10 +5,8 @@
 # stop, gas included:
 #   - mppicPimpleFoam on tutorials/validation/uniformFluidization (a
 #     bubbling bed, gas solved), with coloringFunction's defaults (push-
-#     through, which must have pushed after the restart; held packs that
-#     follow their drain: packDrain read back, some cell draining, and
-#     without the field the run differs), with conserveMomentum gas
-#     (-packsToGas), and with mfixSnider:
+#     through, which must have pushed after the restart), with
+#     conserveMomentum gas (-packsToGas), and with mfixSnider:
 #     0 -> 0.05 s at once, and 0 -> 0.025 s then continued (startFrom
 #     latestTime) to 0.05 s; both write ascii at 17 digits;
 #   - mppicReactingPimpleFoam on tutorials/verification/wetBulb (a droplet
@@ -77,30 +75,6 @@ else
     echo "FAIL push-through: no entrant pushed on after the restart"
     status=1
 fi
-
-# The held packs' drain (the field packDrain) is written and read back;
-# continued without it (the field deleted from the written 0.025 s), the
-# run must differ
-grep -q "PackDrain: the packs' drain read from" \
-    "$runDir/bed.coloringFunction.continued/log.continue" \
-    && echo "PASS held packs' drain: packDrain read on the restart" \
-    || { echo "FAIL held packs' drain: packDrain not read"; status=1; }
-drainMax=$(awk '/^internalField/ {on = 1; next} on == 1 && /^\(/ {on = 2; next}
-    /^\)/ {on = 0} on == 2 && $1 > m {m = $1} END {print m + 0}' \
-    "$runDir/bed.coloringFunction.continued/0.025/packDrain")
-awk -v m="$drainMax" 'BEGIN { exit !(m > 0) }' \
-    && echo "PASS held packs' drain: largest drain at 0.025 s $drainMax m/s (> 0)" \
-    || { echo "FAIL held packs' drain: no cell drains at 0.025 s"; status=1; }
-# the same run continued without the field: starts every drain at zero
-lost="$runDir/bed.drainLost"
-cp -r "$runDir/bed.coloringFunction.continued" "$lost"
-rm -rf "$lost/0.0"[3-5]* "$lost/log.continue"
-rm -f "$lost/0.025/packDrain"
-(cd "$lost" && mppicPimpleFoam > log.continue 2>&1) || status=1
-grep -q "drain read from" "$lost/log.continue" \
-    && { echo "FAIL held packs' drain: a deleted packDrain was read"; status=1; }
-check differs "$runDir/bed.coloringFunction.whole" "$lost" 0.05 1e-8 $bedFields \
-    || status=1
 
 # conserveMomentum gas (-packsToGas: conserving packs whose free packs
 # hand their reactions to the gas): the rule keeps nothing across steps, so the

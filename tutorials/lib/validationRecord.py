@@ -101,7 +101,7 @@ def coeffs_text(path, block):
 
 
 # mppicPimpleFoam's PIMPLE keywords and their defaults (mppicPimpleFoam.C)
-PIMPLE_SWITCHES = (("faceInterpolatedDrag", False), ("balanceImplicitDrag", True))
+PIMPLE_SWITCHES = (("faceInterpolatedDrag", False), ("balanceImplicitDrag", False))
 
 
 def case_settings(case, cloud_file="kinematicCloudProperties"):

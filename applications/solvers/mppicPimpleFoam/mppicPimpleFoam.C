@@ -25,12 +25,11 @@ Description
     by the pressure gradient without spurious velocities). Pressure-velocity
     coupling by PIMPLE with the gas continuity d(ag)/dt + div(ag phi) = 0.
 
-    Stock MPPICFoam's equations and step of OpenFOAM v1912, with one
-    difference in the coupling, on by default (PIMPLE balanceImplicitDrag
-    below): the parcels get the implicit drag the gas got. Off, the solver
-    gives stock MPPICFoam's answer on the same case
+    Stock MPPICFoam's equations and step of OpenFOAM v1912, so that both
+    solvers give the same answer on the same case
     (tests/regression/solverParity); the models of libmppicModels are
-    linked in and selectable at run time.
+    linked in and selectable at run time. Two PIMPLE options change the
+    coupling (below); both are off by default.
 
     With solidsSubCycling active in the cloud's properties, the parcels
     cross each gas step in sub-steps of MFiX-PIC's eq 24 (SolidsSubCycle:
@@ -86,9 +85,8 @@ Usage
                                drag the gas got: each cell's parcels gain
                                UCoeff (U_g,new - U_g,old) over their mass
                                as one velocity change (implicitDragBalance);
-                               true needs U semiImplicit in the cloud's
-                               sourceTerms, else a FatalIOError | true with
-                               U semiImplicit, else false
+                               needs U semiImplicit in the cloud's
+                               sourceTerms, else a FatalIOError | false
     \endtable
     The face coefficient: where the drag coefficient A jumps, between a
     packed cell and the freeboard or a fixed-velocity inflow, or at the
@@ -109,7 +107,11 @@ Usage
     parcels cross cells the difference keeps one sign, and the parcels got
     more drag than the gas's pressure drop shows (0.06-0.08 of the bed's
     weight in the uniform bed at 3 parcels per packed cell and in the
-    Kuipers jet). The balance removes the difference.
+    Kuipers jet). The balance removes the difference, but in a bed at rest
+    it lifts the parcels by the drag's change each step: a fixed bed under
+    a rising inflow lost half its pressure drop (0.17 of the weight at
+    0.06 m/s against Ergun's 0.30), so it is off by default
+    (docs/VALIDATION.md, options the defaults leave off).
 
 \*---------------------------------------------------------------------------*/
 

@@ -35,22 +35,6 @@ Description
       falling U0 (0 -2 0), U (0.5 1.7 0) (bounced) -> (0.5 0 0);
       rising U0 (0 1 0), U (0.2 0.5 0) -> unchanged;
       rising U0 (0 1 0), U (0 -0.3 0) -> (0 0 0).
-    With a pack's drain d (PackDrain), g down, d = 0.3:
-      heldVelocity falling U0 (0 -2 0), U (0.5 1.7 0) -> (0.5 -0.3 0);
-      falling slower than d, U0 (0 -0.1 0), same U -> (0.5 -0.1 0);
-      restingVelocity (1 -2 0.5) -> (1 -0.3 0.5); (0 -0.1 0) unchanged.
-    PackDrain (drainTime 0.1 s), steps of dt 0.04 (filter weight 0.4):
-      step 1: cell 0 ends with one parcel of volume v that came down from
-        cell 4 (0.25 above: centre distance along g 0.25) and one that
-        stayed: u = v*0.25/(2v*0.04) = 3.125 m/s, d = 0.4*3.125 = 1.25;
-        cell 1 one parcel come up from cell 5: u = -6.25, d = -2.5, kept
-        0; cell 2 empty: 0;
-      step 2, nobody moves: cell 0 d = 1.25 - 0.4*1.25 = 0.75, cell 1
-        -1.5 (kept 0);
-      a step of dt 0.2 > drainTime (weight 1), cell 0's parcel down
-        again: d = 0.25/(2*0.2) = 0.625;
-      the field packDrain holds d (cell 0: 0.625, cell 1: 0); a
-        PackDrain made off (no held packs) gives 0.
     Bad input: supportPatches (nowhere) -> FatalIOError naming the
     keyword, the value and the patches allowed.
 
@@ -66,7 +50,6 @@ Description
 
 #include "fvCFD.H"
 #include "PackSupport.H"
-#include "PackDrain.H"
 #include "cellRoom.H"
 #include "unitTest.H"
 
@@ -96,44 +79,6 @@ bool heldRows
         ok = ok && support.held(column + 4*row) == rows.found(row);
     }
     return ok;
-}
-
-
-void checkPackDrain(const fvMesh& mesh)
-{
-    const scalar v = 1e-9;
-
-    PackDrain drain(mesh, true);
-
-    drain.startTally();
-    drain.add(0, v, 0.25);
-    drain.add(0, v, 0);
-    drain.add(1, v, -0.25);
-    drain.endTally(0.04);
-    checkClose("PackDrain step 1: cell 0 d = 1.25", drain.velocity(0), 1.25);
-    checkTrue("PackDrain step 1: cell 1 (rising) 0", drain.velocity(1) == 0);
-    checkTrue("PackDrain step 1: cell 2 (empty) 0", drain.velocity(2) == 0);
-
-    drain.startTally();
-    drain.add(0, v, 0);
-    drain.add(0, v, 0);
-    drain.add(1, v, 0);
-    drain.endTally(0.04);
-    checkClose("PackDrain step 2: cell 0 d = 0.75", drain.velocity(0), 0.75);
-
-    drain.startTally();
-    drain.add(0, v, 0.25);
-    drain.add(0, v, 0);
-    drain.endTally(0.2);
-    checkClose("PackDrain dt > drainTime: d = 0.625", drain.velocity(0), 0.625);
-
-    const volScalarField& field =
-        mesh.lookupObject<volScalarField>("packDrain");
-    checkClose("packDrain field, cell 0", field[0], 0.625);
-    checkTrue("packDrain field, cell 1: 0", field[1] == 0);
-
-    PackDrain none(mesh, false);
-    checkTrue("PackDrain off (no held packs): 0", none.velocity(0) == 0);
 }
 
 
@@ -230,41 +175,6 @@ int main(int argc, char *argv[])
         "heldVelocity rising (0 1 0), rules (0 -0.3 0) -> (0 0 0)",
         mag(turned) < 1e-15
     );
-
-    const vector drained =
-        support.heldVelocity(vector(0, -2, 0), vector(0.5, 1.7, 0), 0.3);
-    checkTrue
-    (
-        "heldVelocity falling (0 -2 0), drain 0.3 -> (0.5 -0.3 0)",
-        mag(drained - vector(0.5, -0.3, 0)) < 1e-15
-    );
-    const vector slower =
-        support.heldVelocity(vector(0, -0.1, 0), vector(0.5, 1.7, 0), 0.3);
-    checkTrue
-    (
-        "heldVelocity falling (0 -0.1 0), drain 0.3 -> (0.5 -0.1 0)",
-        mag(slower - vector(0.5, -0.1, 0)) < 1e-15
-    );
-    checkTrue
-    (
-        "restingVelocity (1 -2 0.5), drain 0.3 -> (1 -0.3 0.5)",
-        mag
-        (
-            support.restingVelocity(vector(1, -2, 0.5), 0.3)
-          - vector(1, -0.3, 0.5)
-        ) < 1e-15
-    );
-    checkTrue
-    (
-        "restingVelocity (0 -0.1 0), drain 0.3 unchanged",
-        mag
-        (
-            support.restingVelocity(vector(0, -0.1, 0), 0.3)
-          - vector(0, -0.1, 0)
-        ) < 1e-15
-    );
-
-    checkPackDrain(mesh);
 
     dictionary nowhere;
     nowhere.name() = "coloringFunctionCoeffs";

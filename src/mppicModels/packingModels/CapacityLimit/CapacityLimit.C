@@ -40,7 +40,6 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
     holdSupportedPacks_(holdSupportedPacks),
     entries_(),
     support_(mesh, coeffs),
-    drain_(mesh, holdSupportedPacks),
     resting_()
 {
     entries_.setPushThrough(mode(coeffs) == "push");
@@ -56,7 +55,6 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
     holdSupportedPacks_(cl.holdSupportedPacks_),
     entries_(),
     support_(cl.support_),
-    drain_(cl.drain_),
     resting_()
 {}
 
@@ -290,27 +288,6 @@ void Foam::CapacityLimit<CloudType>::startStep
 template<class CloudType>
 void Foam::CapacityLimit<CloudType>::endStep(const CloudType& cloud)
 {
-    if (holdSupportedPacks_ && drain_.on())
-    {
-        // The step's moves from cell to cell along gravity (PackDrain),
-        // also from a cell on another processor
-        const vectorField& C = cloud.mesh().cellCentres();
-        const vector g = cloud.g().value();
-        const vector gHat = g/max(mag(g), VSMALL);
-
-        drain_.startTally();
-        for (const parcelType& p : cloud)
-        {
-            const auto* e = entries_.find(p);
-            const scalar along =
-                e && e->admitted && (e->from >= 0 || e->remote >= 0)
-              ? (C[p.cell()] - entries_.fromCentre(cloud.mesh(), *e)) & gHat
-              : 0;
-            drain_.add(p.cell(), p.nParticle()*p.volume(), along);
-        }
-        drain_.endTally(deltaT_);
-    }
-
     entries_.clear();
     entries_.recordCells(cloud);
 }
@@ -344,7 +321,7 @@ Foam::vector Foam::CapacityLimit<CloudType>::move
     {
         const label celli = entries_.finalCell(p);
         const vector held =
-            support_.heldVelocity(p.U(), kept, drain_.velocity(celli));
+            support_.heldVelocity(p.U(), kept);
 
         // The support stopped a fall: the cell rests on it this step
         if

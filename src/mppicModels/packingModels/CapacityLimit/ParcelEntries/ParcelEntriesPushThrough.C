@@ -17,6 +17,12 @@ Description
     one, and the last cell, which had room, takes one more: the packed
     region moves by one parcel's volume, as an incompressible one would.
 
+    Only an entrant that came out of a full cell is pushed on (it belongs
+    to a packed region on the move); one from a cell that had room for it
+    (a parcel falling out of a suspension onto a bed) lands on the pack:
+    pushed on, such parcels carried a settling bed's surface up by 7 % of
+    its height (measured) and shuffled a bed at rest.
+
     The chain: a breadth-first search from the refusing cell through face
     neighbours (not back into the cell the entrant came from), through
     cells that have a parcel that stayed in them (internal faces only: in
@@ -97,11 +103,30 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
     // (in the cells' order the lowest-numbered took the rooms first: on
     // the Kuipers mesh, numbered column by column from the left wall, the
     // left side's), by their first refused entrant's pushOrderKey
+    // A refused entrant that came out of a full cell (a packed region
+    // moving as a whole; from another processor: its cell's load is not
+    // known here, taken as full) is pushed on; one that came from a cell
+    // with room for it lands on the pack: a parcel falling out of a
+    // suspension onto a bed at rest is refused
     auto refused = [&](const entrant& candidate)
     {
+        if (entries_[candidate.parcel].admitted)
+        {
+            return false;
+        }
+        if (candidate.remote >= 0)
+        {
+            return true;
+        }
+        const label from = candidate.from;
         return
-            !entries_[candidate.parcel].admitted
-         && (candidate.from >= 0 || candidate.remote >= 0);
+            from >= 0
+         && !cellRoom::fits
+            (
+                candidate.volume,
+                closePackFraction*mesh.V()[from] - load[from]
+              - candidate.volume
+            );
     };
     const label timeIndex = mesh.time().timeIndex();
     std::vector<std::pair<std::uint64_t, label>> order;
