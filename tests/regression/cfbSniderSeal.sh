@@ -5,16 +5,15 @@
 # mfixSnider -riserBed 0.16 -standpipeLevel 0.576 -equalArea -endTime 0.1
 # (coarse mesh, weight 64, Case 1; about 2 minutes). Allrun gives mfixSnider
 # the cloud's diffusion averaging over the mesh's cell size (MFiX-PIC's hat
-# deposit, which our linearHat makes only on hexahedra), with the default
-# capacity limit (push-through). With basic averaging (cell values of 2-4
+# deposit, which our linearHat makes only on hexahedra), with the case's
+# capacityLimit push (push-through). With basic averaging (cell values of 2-4
 # parcels) the Snider stress loosened the packed column within 0.1 s: this
 # run with basic gave 0.527 over the standpipe and 0.428 over the lower
 # bend below (without push-through 0.22 in the bend), and in the longer
 # runs the riser's gas came back through the leg and up the standpipe.
 # Checks:
 #   - the case as Allrun set it: packingModel mfixSnider, averagingMethod
-#     diffusion, bandwidth 0.014 (the coarse cellSize), no capacityLimit
-#     entry (the default, push);
+#     diffusion, bandwidth 0.014 (the coarse cellSize), capacityLimit push;
 #   - at 0.1 s the seeded packed column still packed: the volume mean of
 #     1 - alpha.air over the standpipe (y 0.15-0.45 within 0.0127 of its
 #     axis x 0.0727, z 0.075) and over the lower half of the bend (within
@@ -46,8 +45,8 @@ for what, pattern in (("packingModel mfixSnider", r"\n\s+packingModel\s+mfixSnid
                       ("bandwidth 0.014", r"\n\s+bandwidth\s+0.014;"),
                       ):
     check(re.search(pattern, props) is not None, "the case sets " + what)
-check(re.search(r"mfixSniderCoeffs\s*\{[^}]*capacityLimit", props) is None,
-      "mfixSniderCoeffs leaves capacityLimit at its default (push)")
+check(re.search(r"mfixSniderCoeffs\s*\{[^}]*capacityLimit\s+push;", props)
+      is not None, "the case sets capacityLimit push (mfixSniderCoeffs)")
 
 C = np.array(internal_field("0/C"))
 V = np.array(internal_field("0/V"))

@@ -5,9 +5,9 @@
 # tutorials/validation/uniformFluidization with mfixSnider (-packing
 # mfixSnider: the linear-hat deposit for its stress, its mean solids velocity
 # and the gas fraction), the gas velocity and fraction interpolated to the
-# parcels with the linear hat too, capacityLimit refuse (the limit without
-# push-through, whose chains stay on their processor: see the pushThrough
-# variant below), for 0.01 s (20 steps), serial, decomposed into 2
+# parcels with the linear hat too, capacityLimit refuse (the default: the
+# limit without push-through, whose chains stay on their processor: see the
+# pushThrough variant below), for 0.01 s (20 steps), serial, decomposed into 2
 # (simple (2 1 1): a vertical cut through the bed) and into 16 (simple
 # (2 4 2), oversubscribed: edges where four and points where eight
 # processors meet inside the bed), with the gas solved to 1e-13 (PCG/DIC,
@@ -23,7 +23,7 @@
 #     interpolation, 16 ranks 0.0048, 0.11, 0.15: the check can fail);
 #   - the same parcel count and cloud mass (to 1e-12).
 # parallelLinearHat <runDir> cornerNodes (parallelCornerNodes.sh): the
-# coloringFunction (capacityLimit refuse) instead, the gas fraction deposited with
+# coloringFunction (capacityLimit refuse, the default) instead, the gas fraction deposited with
 # averagingMethod cornerNodes (solidsFractionFrom averaging, parcels at their
 # own places: the 27-cell blocks across processor faces), the same checks
 # but kinematicCloud:UMean (measured when written: 2 ranks alpha.air
@@ -45,8 +45,8 @@
 # components deciding MFiX's rules, faceGradient on (2 1 1) by 1.5e-3,
 # 0.061: the checks can fail.
 # parallelLinearHat <runDir> pushThrough (parallelPushThrough.sh): the
-# tutorial's coloringFunction with its defaults (capacityLimit push), whose
-# push-through chains stay on their
+# tutorial's coloringFunction with capacityLimit push, whose push-through
+# chains stay on their
 # processor, so the runs differ from the serial one where a chain would
 # cross a processor face (measured when written, refused entrants pushed on
 # in the 20 steps: serial 1219, 2 ranks 1438, 16 ranks 1290, or 154 when
@@ -79,9 +79,10 @@ do
     setEntry "$dir" system/controlDict writePrecision 15
     # (foamDictionary cannot address the keys U.air and alpha.air)
     cloudProps="$dir/constant/kinematicCloudProperties"
-    # the limit without push-through (capacityLimit refuse) makes serial's
-    # decisions on every decomposition; pushThrough runs the default, push
+    # the limit without push-through (capacityLimit refuse, the default)
+    # makes serial's decisions on every decomposition
     limit=refuse
+    [ "$method" = pushThrough ] && limit=push
     if [ "$method" = linearHat ]
     then
         editEntries "$cloudProps" 's/^\( *\(U\|alpha\)\.air  *\)cell;/\1linearHat;/' \
@@ -97,11 +98,8 @@ do
         editEntries "$cloudProps" "/coloringFunctionCoeffs/,/}/s/^\\( *\\)closePackFraction .*/&\\n\\1impulse $method;\\n\\1reflection component;/" \
             -E "impulse $method;|reflection component;" 2
     fi
-    if [ "$method" != pushThrough ]
-    then
-        editEntries "$cloudProps" "/\\(coloringFunction\\|mfixSnider\\)Coeffs/,/}/s/^\\( *\\)closePackFraction .*/&\\n\\1capacityLimit $limit;/" \
-            -E "capacityLimit $limit;" 2
-    fi
+    editEntries "$cloudProps" "/\\(coloringFunction\\|mfixSnider\\)Coeffs/,/}/s/^\\( *\\)closePackFraction .*/&\\n\\1capacityLimit $limit;/" \
+        -E "capacityLimit $limit;" 2
     tightGasSolvers "$dir" || exit 1
 done
 sed -i -e 's/^numberOfSubdomains .*/numberOfSubdomains 16;/' \

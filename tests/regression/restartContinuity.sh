@@ -4,8 +4,8 @@
 # A run stopped at a written time and continued gives the run that did not
 # stop, gas included:
 #   - mppicPimpleFoam on tutorials/validation/uniformFluidization (a
-#     bubbling bed, gas solved), with coloringFunction's defaults (push-
-#     through, which must have pushed after the restart), with
+#     bubbling bed, gas solved), with coloringFunction, with it and
+#     capacityLimit push (which must have pushed after the restart), with
 #     conserveMomentum gas (-packsToGas), and with mfixSnider:
 #     0 -> 0.05 s at once, and 0 -> 0.025 s then continued (startFrom
 #     latestTime) to 0.05 s; both write ascii at 17 digits;
@@ -22,6 +22,7 @@ runDir="${1:?usage: restartContinuity.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 # wholeAndContinued <tutorial> <name> <precision> <T1> <T2> <endArg> [args]
+# (cloudEntry: an entry added to the packing models' coefficients)
 wholeAndContinued()
 {
     local tutorial="$1" name="$2" precision="$3" t1="$4" t2="$5" endArg="$6"
@@ -34,6 +35,13 @@ wholeAndContinued()
         # (wetBulb writes every second: write the stop time; in both, as
         # its adjustable time step lands on write times)
         setEntry "$runDir/$name.$piece" system/controlDict writeInterval "$t1"
+        if [ -n "$cloudEntry" ]
+        then
+            local props="$runDir/$name.$piece/constant/kinematicCloudProperties"
+            sed -i "/\(coloringFunction\|mfixSnider\)Coeffs/,/}/s/^\( *\)closePackFraction .*/&\n\1$cloudEntry/" "$props"
+            grep -q "$cloudEntry" "$props" \
+                || { echo "$name: $cloudEntry not set"; exit 1; }
+        fi
     done
 
     runAllrun "$runDir/$name.whole" $endArg "$t2" "$@" || exit 1
@@ -63,11 +71,17 @@ do
         "$runDir/bed.$packing.continued" 0.05 1e-8 $bedFields || status=1
 done
 
-# coloringFunction's push-through (its default): the chains start at the
-# ninth step (0.0045 s); after the restart at 0.025 s about 300 refused
-# entrants a step are pushed on (15 056 in the 50 steps, measured)
+# coloringFunction with capacityLimit push: refused entrants out of full
+# cells are pushed on after the restart at 0.025 s (419 in the 50 steps,
+# measured)
+cloudEntry="capacityLimit push;"
+wholeAndContinued validation/uniformFluidization bed.push 17 \
+    0.025 0.05 "" -packing coloringFunction
+cloudEntry=""
+check sameState "$runDir/bed.push.whole" "$runDir/bed.push.continued" \
+    0.05 1e-8 $bedFields || status=1
 pushes=$(awk '/^ *pushThrough: [0-9]+ refused/ {n += $2} END {print n + 0}' \
-    "$runDir/bed.coloringFunction.continued/log.continue")
+    "$runDir/bed.push.continued/log.continue")
 if [ "$pushes" -gt 0 ]
 then
     echo "PASS push-through: $pushes refused entrants pushed on after the restart (> 0)"

@@ -22,7 +22,7 @@ Foam::word Foam::CapacityLimit<CloudType>::mode(const dictionary& coeffs)
 {
     return mppicCoefficients::readChoice
     (
-        coeffs, "capacityLimit", "push", {"push", "refuse", "none"}
+        coeffs, "capacityLimit", "refuse", {"push", "refuse", "none"}
     );
 }
 

@@ -107,7 +107,8 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
     // moving as a whole; from another processor: its cell's load is not
     // known here, taken as full) is pushed on; one that came from a cell
     // with room for it lands on the pack: a parcel falling out of a
-    // suspension onto a bed at rest is refused
+    // suspension onto a bed at rest is refused. (load[from] holds the
+    // refused entrant already: admitUpToClosePack sent it back.)
     auto refused = [&](const entrant& candidate)
     {
         if (entries_[candidate.parcel].admitted)
@@ -123,9 +124,7 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
             from >= 0
          && !cellRoom::fits
             (
-                candidate.volume,
-                closePackFraction*mesh.V()[from] - load[from]
-              - candidate.volume
+                candidate.volume, closePackFraction*mesh.V()[from] - load[from]
             );
     };
     const label timeIndex = mesh.time().timeIndex();
