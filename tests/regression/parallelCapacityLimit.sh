@@ -4,8 +4,8 @@
 # processes: 2 (MPI ranks at most; tests/Alltest runs it alone)
 # The capacity limit makes serial's decisions on any decomposition
 # (ParcelEntries.H): tutorials/circulatingFluidizedBed with -packing
-# mfixSnider (diffusion averaging), capacityLimit refuse (push-through's
-# chains stay on their processor), the gas solved to 1e-13, run serially
+# mfixSnider (diffusion averaging), capacityLimit refuse instead of the
+# case's push (push-through's chains stay on their processor), the gas solved to 1e-13, run serially
 # from the seeded start (riser bed and standpipe packed) to 0.01 s; from its
 # written 0.005 s, on serially and on 2 ranks (simple (2 1 1), a cut near
 # x = 0.11 through the crossover, cyclone and L-valve) to 0.01 s, 15 steps
@@ -28,9 +28,9 @@ runDir="${1:?usage: parallelCapacityLimit.sh <runDir>}"
 
 start="$runDir/start"
 copyTutorial circulatingFluidizedBed "$start"
-sed -i '/mfixSniderCoeffs/,/}/s/^\( *\)closePackFraction .*/&\n\1capacityLimit refuse;/' \
+sed -i '/mfixSniderCoeffs/,/}/s/^\( *capacityLimit \+\)push;/\1refuse;/' \
     "$start/constant/kinematicCloudProperties"
-[ "$(grep -c 'capacityLimit refuse;' "$start/constant/kinematicCloudProperties")" = 1 ] \
+[ "$(grep -c 'capacityLimit *refuse;' "$start/constant/kinematicCloudProperties")" = 1 ] \
     || { echo "capacityLimit not set to refuse"; exit 1; }
 tightGasSolvers "$start" || exit 1
 PROGRESS_EVERY=0 runAllrun "$start" -packing mfixSnider -riserBed 0.16 \
