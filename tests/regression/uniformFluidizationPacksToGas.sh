@@ -3,7 +3,8 @@
 # uniformFluidizationPacksToGas <runDir>
 # tutorials/validation/uniformFluidization with -packsToGas (coloringFunction
 # with conserveMomentum gas: the packs take the reactions, and those no
-# support holds hand them to the gas) at 3 parcels per packed cell (2880
+# support holds hand them to the gas; PIMPLE balanceImplicitDrag true) at
+# 3 parcels per packed cell (2880
 # parcels of 382 particles), 2 s (about 2 minutes). Checks, over 1.2-2 s:
 #   - (deltaP - gas head)/(m g/A) within 2 % of 1,
 #     m g/A = 0.1*0.12*0.01*0.6*2500*9.81/0.001 = 1765.8 Pa;
