@@ -192,8 +192,9 @@ def main():
             "",
             "Each option below helps some case and harms another; the "
             "defaults are the setting the matrix as a whole is best served "
-            "by. Measured with the option set and everything else the "
-            "defaults (tutorials/validationTradeOffs).",
+            "by. Measured by hand with the option set; the commit column "
+            "names the code and what else was set (tutorials/"
+            "validationTradeOffs).",
             "",
             "| option | case | with the option | on the defaults | commit |",
             "|---|---|---|---|---|",
