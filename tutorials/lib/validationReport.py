@@ -23,39 +23,36 @@ import subprocess
 import sys
 
 
-def read_cases(project):
-    """(name, tutorial, allrun args, results, title, long) per line of
-    tutorials/validationCases."""
-    cases = []
-    path = os.path.join(project, "tutorials", "validationCases")
+def read_rows(path, n_fields):
+    """The lines of a |-separated list (comments and blank lines aside),
+    each as its n_fields stripped fields; stops naming the file and the
+    line when a line has another count."""
+    rows = []
     for line in open(path):
         line = line.strip()
         if not line or line.startswith("#"):
             continue
         fields = [f.strip() for f in line.split("|")]
-        if len(fields) != 6:
-            sys.exit("%s: expected 6 fields separated by |: %s" % (path, line))
-        cases.append(dict(zip(("name", "tutorial", "allrun", "results",
-                               "title", "length"), fields)))
-    return cases
+        if len(fields) != n_fields:
+            sys.exit("%s: expected %d fields separated by |: %s"
+                     % (path, n_fields, line))
+        rows.append(fields)
+    return rows
+
+
+def read_cases(project):
+    """(name, tutorial, allrun args, results, title, long) per line of
+    tutorials/validationCases."""
+    path = os.path.join(project, "tutorials", "validationCases")
+    return [dict(zip(("name", "tutorial", "allrun", "results", "title",
+                      "length"), fields)) for fields in read_rows(path, 6)]
 
 
 def read_trade_offs(project):
     """(option, case, with it, on the defaults, commit) per line of
     tutorials/validationTradeOffs; none without the file."""
     path = os.path.join(project, "tutorials", "validationTradeOffs")
-    rows = []
-    if not os.path.exists(path):
-        return rows
-    for line in open(path):
-        line = line.strip()
-        if not line or line.startswith("#"):
-            continue
-        fields = [f.strip() for f in line.split("|")]
-        if len(fields) != 5:
-            sys.exit("%s: expected 5 fields separated by |: %s" % (path, line))
-        rows.append(fields)
-    return rows
+    return read_rows(path, 5) if os.path.exists(path) else []
 
 
 def git(project, *args):
