@@ -235,9 +235,9 @@ void Foam::PackingModels::MfixSnider<CloudType>::cacheFields(const bool store)
         // The packs take the opposite of the impulses they gave, before
         // the mean of the final velocities is taken; a held pack whose fall
         // the support stopped in this step hands the part down along
-        // gravity to it (CapacityLimit::settledVelocity; before 2026-11-26
-        // its parcels kept it, and the drag of that fall raised a fixed
-        // bed's pressure drop to 2 x Ergun's)
+        // gravity to it (CapacityLimit::settledVelocity; kept by its
+        // parcels, the drag of that fall raised a fixed bed's pressure drop
+        // to 2 x Ergun's)
         if (this->conserveMomentum())
         {
             this->applyReactions(limit_);
