@@ -7,8 +7,10 @@ kuipersJetResults.summary():
     measured points at 3.4 and 6.4 cm from the axis (kuipersJetProfiles.csv),
     at most 0.035 and 0.058, beside MFiX-PIC's own (its curve of seed 1
     Fig. 6 against the same points);
-  - the slab measure (informational): the instants of the window at which a
-    packed slab lies over a gas void;
+    (and, in its note, where the rest of the weight goes: the packing step,
+    the walls);
+  - the slab measure: the instants of the window at which a packed slab
+    lies over a gas void, none (Kuipers saw none);
   - the largest cell solids fraction against the script's bound
     max(1.05 alpha_cp, alpha_cp + one parcel).
 The settings are read from the case's files: the packing model and its
@@ -52,6 +54,17 @@ def finite(value):
     return value if value is not None and math.isfinite(value) else None
 
 
+def weight_shares(res):
+    """Where the bed's weight goes over the window (the goal's fallback when
+    deltaP carries less than 0.90 of it): '' without the packing budget."""
+    if res.get("packing") is None or res.get("walls") is None:
+        return ""
+    return ("; the weight carried by the gas (deltaP) %.3f, the packing step "
+            "(held packs on the distributor and the walls) %.3f, the rest "
+            "(walls; drag beyond the gas's pressure drop) %.3f"
+            % (res["dpRatio"], res["packing"], res["walls"]))
+
+
 def rows(res, case):
     """The record's rows from kuipersJetResults.summary() of the run in case."""
     mad = res.get("mad", {})
@@ -62,9 +75,10 @@ def rows(res, case):
         reference_source="the bed's weight (no measured deltaP is public)",
         peer=finite(mfix_pic_ratio()), goal=record.at_least(DP_GOAL),
         note="MFiX-PIC: seed 1 Fig. 7, 20-24 s (kuipersJetPressureDrop.csv); "
-        "ours: std %s Pa, amplitude (half 5-95 %% range) %s Pa"
+        "ours: std %s Pa, amplitude (half 5-95 %% range) %s Pa%s"
         % ("%.0f" % res["dpStd"] if "dpStd" in res else "-",
-           "%.0f" % res["dpAmplitude"] if "dpAmplitude" in res else "-"))]
+           "%.0f" % res["dpAmplitude"] if "dpAmplitude" in res else "-",
+           weight_shares(res)))]
     for x_cm in (3.4, 6.4):
         out.append(record.row(
             "profile at %.1f cm: mean |difference| from Kuipers' points" % x_cm,
@@ -79,6 +93,7 @@ def rows(res, case):
         out.append(record.row(
             "instants with a packed slab over a gas void",
             int(round(res["slab"]*res["slabCount"])),
+            goal=record.at_most(0),
             note="of %d instants (%s) in the window: %.1f %%"
             % (res["slabCount"], res["slabSource"], 100*res["slab"])))
     if "maxCell" in res:
