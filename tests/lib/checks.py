@@ -5,8 +5,10 @@ Reads OpenFOAM output directly (lagrangian fields, postProcessing tables,
 logs) and compares with hand-derived references or between runs. Each
 check prints one line per comparison and the script exits 1 on any failure.
 
-A test script's own Python imports it for the same lines (report)
-and its exit status (status()): one pass/fail helper for every test.
+A test's own Python (tests/regression/<name>.py beside <name>.sh) imports
+it for the same lines (report) and its exit status (status()): one
+pass/fail helper for every test; and for the readers they share
+(read_list, read_rows, read_dat, lagrangian_masses, seeded_parcels).
 
 Usage:
     checks.py parity <caseA> <caseB> <time> <t0> <t1> <relTol>
@@ -55,26 +57,33 @@ def seeded_parcels(case):
     return pts, float(re.search(r"nParticle\s+([^;]+);", seeded).group(1))
 
 
+def lagrangian_masses(cloud_dir):
+    """Each parcel's mass nParticle*rho*pi/6*d^3, in the order of the files,
+    from a lagrangian cloud folder's nParticle, d and rho."""
+    n = read_list(os.path.join(cloud_dir, "nParticle"))
+    dia = read_list(os.path.join(cloud_dir, "d"))
+    rho = read_list(os.path.join(cloud_dir, "rho"))
+    return [ni*r*math.pi/6*di**3 for ni, di, r in zip(n, dia, rho)]
+
+
 def parcel_masses(case, time, cloud="kinematicCloud"):
     d = os.path.join(case, time, "lagrangian", cloud)
     if not os.path.isdir(d):
         return []
-    n = read_list(os.path.join(d, "nParticle"))
-    dia = read_list(os.path.join(d, "d"))
-    rho = read_list(os.path.join(d, "rho"))
-    return sorted(ni*r*math.pi/6*di**3 for ni, di, r in zip(n, dia, rho))
+    return sorted(lagrangian_masses(d))
+
+
+def read_dat(path):
+    """Rows of numbers of a postProcessing .dat table (comment lines, which
+    start with #, and blank lines skipped)."""
+    return [[float(v) for v in line.split()] for line in open(path)
+            if not line.startswith("#") and line.strip()]
 
 
 def mean_delta_p(case, t0, t1, name="bedPressureDrop"):
     path = os.path.join(case, "postProcessing", name, "0", name + ".dat")
-    values = []
-    for line in open(path):
-        if line.startswith("#") or not line.strip():
-            continue
-        cols = line.split()
-        t = float(cols[0])
-        if t0 - 1e-9 <= t <= t1 + 1e-9:
-            values.append(float(cols[3]))
+    values = [cols[3] for cols in read_dat(path)
+              if t0 - 1e-9 <= cols[0] <= t1 + 1e-9]
     return sum(values)/len(values), len(values)
 
 

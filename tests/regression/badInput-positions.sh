@@ -7,6 +7,7 @@
 # outside and the first, exit status 1 (cloudInputChecks::
 # injectionPositions; OpenFOAM names the first position only). With
 # ignoreOutOfBounds yes the run goes on and OpenFOAM drops the two.
+# (the two positions moved by badInput-positions.py)
 #------------------------------------------------------------------------------
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
@@ -16,18 +17,8 @@ case="$runDir/outside"
 rm -rf "$case"
 cp -r "$runDir/prepared" "$case"
 
-/usr/bin/python3 - "$case/constant/kinematicCloudPositions" <<'PYTHON'
-import re, sys
-path = sys.argv[1]
-text = open(path).read()
-body = text[text.index("}") + 1:]
-points = re.findall(r"\(([^()]+)\)", body)
-points[4] = "0.5 0.2 0.0025"
-points[8] = "0.02 -0.1 0.0025"
-head = text[:text.index("}") + 1]
-open(path, "w").write(head + "\n\n%d\n(\n%s\n)\n" % (
-    len(points), "\n".join("(%s)" % p for p in points)))
-PYTHON
+/usr/bin/python3 "$MPPIC_PROJECT_DIR/tests/regression/badInput-positions.py" \
+    "$case/constant/kinematicCloudPositions"
 
 runBroken "$case" mppicPimpleFoam > /dev/null
 sed -n '/FOAM FATAL/,/^$/p' "$case/log.broken"

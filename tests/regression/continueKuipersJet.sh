@@ -8,14 +8,9 @@
 # before the stop (LeanMPPICCloud asks it to record the cells the parcels
 # were read in); without that, the first step after the restart took a
 # sixth and seventh parcel into a full cell (0.84, measured) and kept it.
-# (the case writes 12 digits: with 8 the continued cloud mass was 3e-8 off).
-# Checks at every step of both pieces: 38 000 parcels, the cloud mass
-# 0.6*0.57*0.5*0.015*2660 = 6.8229 kg to 1e-9, the largest cell solids
-# fraction <= 0.600 (+1e-6); and that the second piece started from 0.01 s.
-# mppicPost.function_object_table on hand-made pieces: 0/x.dat (t 0-3),
-# 2/x.dat (t 2, 2.5: a piece stopped), 2/x_2.dat (t 2-5: the piece
-# continued from the same 2 s, which OpenFOAM writes beside it) must read
-# t 0, 1, 2, 3, 4, 5 with the values of x_2.dat from 2 on.
+# checks: continueKuipersJet.py (at every step of both pieces the parcels,
+# the cloud mass and the largest cell solids fraction; the second piece from
+# 0.01 s; mppicPost.function_object_table on hand-made continued pieces).
 # ./Allrun 0.03 -continue -parallel on this serial run stops, exit 1, with a
 # message that names the missing processor folders, and runs nothing.
 #------------------------------------------------------------------------------
@@ -32,40 +27,5 @@ allrunRefuses "$runDir/case" "-continue -parallel: no processor folders" 0.03 \
     0.03 -continue -parallel || status=1
 
 cd "$runDir/case" || exit 1
-/usr/bin/python3 - <<'PY' || status=1
-import re, sys
-import checks
-from checks import report as check
-log = open("log.mppicPimpleFoam").read()
-starts = re.findall(r"Starting time loop", log)
-steps = re.findall(r"^Time = ([0-9.e-]+)\s*$.*?Cloud: parcels = (\d+), max solids fraction = ([0-9.e+-]+)",
-                   log, re.M | re.S)
-times = [float(t) for t, _, _ in steps]
-check(len(starts) == 2 and len(steps) == 40 and abs(times[20] - 0.0105) < 1e-9,
-      "two pieces, 40 steps, the second from 0.01 s (first time %g)" % times[20])
-check(all(int(n) == 38000 for _, n, _ in steps), "38000 parcels at every step")
-worst = max(float(a) for _, _, a in steps)
-after = max(float(a) for _, _, a in steps[20:])
-check(worst <= 0.6 + 1e-6,
-      "largest cell solids fraction %.6f <= 0.600 at every step (after the restart %.6f)"
-      % (worst, after))
-mass = 0.6*0.57*0.5*0.015*2660
-masses = [float(m) for m in re.findall(r"Current mass in system\s*=\s*([0-9.e+-]+)", log)]
-check(len(masses) >= 40 and all(abs(m/mass - 1) < 1e-9 for m in masses),
-      "cloud mass %.6g kg = %.6g kg at every step" % (masses[-1] if masses else -1, mass))
-import os, tempfile
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tutorials", "lib"))
-import mppicPost
-with tempfile.TemporaryDirectory() as case:
-    pieces = {"0/x.dat": [(0, 0), (1, 0), (2, 0), (3, 0)], "2/x.dat": [(2, 1), (2.5, 1)],
-              "2/x_2.dat": [(2, 2), (3, 2), (4, 2), (5, 2)]}
-    for name, rows in pieces.items():
-        path = os.path.join(case, "postProcessing", "x", name)
-        os.makedirs(os.path.dirname(path), exist_ok=True)
-        open(path, "w").write("# Time value\n" + "".join("%g %g\n" % r for r in rows))
-    read = [tuple(r) for r in mppicPost.function_object_table(case, "x")]
-check(read == [(0, 0), (1, 0), (2, 2), (3, 2), (4, 2), (5, 2)],
-      "function_object_table over a piece continued from where another stopped: %s" % read)
-sys.exit(checks.status())
-PY
+/usr/bin/python3 "$MPPIC_PROJECT_DIR/tests/regression/continueKuipersJet.py" || status=1
 exit $status

@@ -12,8 +12,9 @@
 # their barycentric coordinates (a round-off change), so the states agree to
 # round-off: every parcel's position, velocity and statistical weight and the
 # gas velocity, pressure and fraction to 1e-9 of each column's largest value
-# (written with 17 digits). The lean pass must also have left parcels out
-# (fewer parcels corrected than in the cloud, from the log).
+# (written with 17 digits: checks.py sameState). The lean pass must also
+# have left parcels out (fewer parcels corrected than in the cloud, from the
+# log; checks: leanCloudStep.py).
 # Why explicit for 3 steps only: its correction applies where
 # (U_p - u_mean).grad(alpha) > 0, and the 5 parcels of a cell start with
 # one velocity, so U_p - u_mean is round-off and its sign flips with the
@@ -49,15 +50,7 @@ do
     check sameState "$lean" "$stock" $endTime 1e-9 \
         lagrangian/kinematicCloud/positions lagrangian/kinematicCloud/U \
         lagrangian/kinematicCloud/nParticle U.air p alpha.air || status=1
-    /usr/bin/python3 - "$lean/log.mppicPimpleFoam" $endTime <<'PY' || status=1
-import re, sys
-passes = [(int(a), int(b)) for a, b in
-          re.findall(r"correction pass: (\d+) of (\d+) parcels", open(sys.argv[1]).read())]
-steps = round(float(sys.argv[2])/5e-4)
-ok = len(passes) == steps and all(a < b for a, b in passes)
-print(("PASS " if ok else "FAIL ") + "lean correction pass over fewer parcels than the"
-      " cloud at each of %d steps (last: %d of %d)" % (len(passes), *passes[-1]))
-sys.exit(0 if ok else 1)
-PY
+    /usr/bin/python3 "$MPPIC_PROJECT_DIR/tests/regression/leanCloudStep.py" \
+        "$lean/log.mppicPimpleFoam" $endTime || status=1
 done
 exit $status

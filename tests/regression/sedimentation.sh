@@ -3,16 +3,11 @@
 # sedimentation <runDir>
 # tutorials/verification/sedimentation with coloringFunction (1 s, the full
 # case, about 50 s): a suspension at solids fraction 0.15 settles into a bed
-# at close pack 0.6, 32 parcels per packed cell. Checks, from the packing
-# monitor (every step) and the final field:
-#   - the gas fraction never falls below 0;
-#   - the final bed height is within 3 % of the inventory height
-#     V_solids/(alpha_cp*A) = 5.625e-6/(0.6*0.05*0.005) = 0.0375 m;
-#   - the cloud mass at the end equals the seeded solids volume * 2500;
-#   - at every step, the largest solids fraction of the model's averaging
-#     (basic: the cell solids fraction, which moves in steps of one parcel,
-#     0.01875 of a cell here) is at most
-#     max(1.03*alpha_cp, alpha_cp + one parcel) = max(0.618, 0.61875).
+# at close pack 0.6, 32 parcels per packed cell. checks: sedimentation.py
+# (the gas fraction never below 0; the final bed height within 3 % of the
+# inventory height 0.0375 m; the cloud mass; the largest solids fraction at
+# every step within one parcel of close pack), after sedimentationResults.py
+# runs.
 # The validation matrix runs the same case: bin/validate sedimentation
 # (docs/VALIDATION.md).
 #------------------------------------------------------------------------------
@@ -25,28 +20,5 @@ runAllrun "$runDir/case" || exit 1
 cd "$runDir/case" || exit 1
 /usr/bin/python3 sedimentationResults.py --label coloringFunction
 status=0
-/usr/bin/python3 - <<'PY' || status=1
-import math, sys
-sys.path.insert(0, ".")
-from sedimentationResults import read_monitor, bed_profile, post, \
-    surface_height, seeded_solids_volume
-cp, rows = read_monitor(".")
-import checks
-from checks import report as check
-min_gas = min(r[6] for r in rows)
-check(min_gas >= 0, "gas fraction never below 0 (min %.4f)" % min_gas)
-ys, prof, dy, _, _ = bed_profile(".", post.latest_time("."))
-h = surface_height(ys, prof, 0.5*cp, dy)
-check(abs(h/0.0375 - 1) <= 0.03, "bed height %.4f m within 3 %% of 0.0375 m" % h)
-mass = rows[-1][2]
-check(abs(mass/(seeded_solids_volume(".")*2500) - 1) < 1e-9,
-      "cloud mass %.10g kg = seeded volume * 2500" % mass)
-max_avg = max(r[3] for r in rows)
-one_parcel = seeded_solids_volume(".")/rows[-1][1]/0.005**3  # 5 mm cubes
-bound = max(1.03*cp, cp + one_parcel)
-check(abs(one_parcel - 0.01875) < 1e-9, "one parcel = %.6f of a cell" % one_parcel)
-check(max_avg <= bound, "max solids fraction %.6f <= max(1.03*alpha_cp, "
-      "alpha_cp + one parcel) = %.6f at every step" % (max_avg, bound))
-sys.exit(checks.status())
-PY
+/usr/bin/python3 "$MPPIC_PROJECT_DIR/tests/regression/sedimentation.py" || status=1
 exit $status

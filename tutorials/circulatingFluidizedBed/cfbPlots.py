@@ -2,11 +2,13 @@
 """The circulating fluidized bed's plots, for cfbResults.py --plot and
 --geometry: the histories of a summary (cfb_history.png) and the mesh's
 patches with the pressure taps, collector planes and inventory box
-(cfb_geometry.png)."""
+(cfb_geometry.png). It takes the summary as an argument and the case's
+constants from cfbData.py: it does not import cfbResults, which imports it
+(inside main() only, for --plot and --geometry)."""
 import os
 import re
 
-from cfbResults import CLOSE_PACK, STANDPIPE_Y0
+from cfbData import CLOSE_PACK, STANDPIPE_Y0
 
 
 def plot(r, path):

@@ -52,14 +52,9 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
 import cfbRecord  # noqa: E402 (beside this file)
-
-RHO_P = 860.0            # HDPE, kg/m3 (constant/kinematicCloudProperties)
-CLOSE_PACK = 0.6
-STANDPIPE_Y0 = 0.146     # top of the bend, bottom of the straight standpipe
-STANDPIPE_LENGTH = 0.932 - 0.146
-HEIGHT_THRESHOLD = 0.3   # solids fraction at the inventory's top
-HEIGHT_AVERAGE = 0.02    # m, running mean along the axis
-TAPS = {"riser005": 0, "riser119": 4, "standpipe016": 5, "standpipe090": 8}
+# the case's constants (beside this file; cfbPlots reads them there too)
+from cfbData import (CLOSE_PACK, HEIGHT_AVERAGE, HEIGHT_THRESHOLD,  # noqa: E402
+                     RHO_P, STANDPIPE_LENGTH, STANDPIPE_Y0, TAPS)
 
 
 def time_dirs(path):
@@ -383,6 +378,8 @@ def main(argv):
     p.add_argument("--record", metavar="FILE",
                    help="write the validation matrix's record to FILE")
     a = p.parse_args(argv)
+    # the plots module is imported here only (it imports cfbData, not this
+    # module): --geometry and --plot
     if a.geometry:
         import cfbPlots
         cfbPlots.plot_geometry(a.case, os.path.join(a.case, "cfb_geometry.png"))

@@ -1,10 +1,14 @@
 """Plots of the Kuipers central-jet bed's results (kuipersJetResults.py
 --plot): kuipersJet_<label>_{pressureDrop,packing,profiles,snapshots,
-slabs,packingForce}.png in the case."""
+slabs,packingForce}.png in the case. It takes kuipersJetResults.summary()'s
+dict as an argument and its readers and constants from kuipersJetData.py:
+it does not import kuipersJetResults, which imports it (inside main() only,
+for --plot)."""
 import os
 
-import kuipersJetResults as k
+import kuipersJetData as k
 import kuipersJetSlabs as slabs
+from mppicPost import time_dirs  # (tutorials/lib: kuipersJetData puts it on the path)
 
 # the runs' lines (green and black are the seed's curves)
 RUN_COLOURS = ("b", "tab:orange", "tab:red", "tab:purple", "tab:brown", "tab:cyan")
@@ -96,7 +100,7 @@ def plot(res, case, label):
 
     if "grid" in res:
         cells, xs, ys = res["grid"]
-        shots = [name for t, name in k.time_dirs(case) if t > 0][-4:]
+        shots = [name for t, name in time_dirs(case) if t > 0][-4:]
         panels = [(n, k.solids_field(case, n)) for n in shots]
         panels = [(n, f) for n, f in panels if f is not None]
         if "meanGrid" in res:

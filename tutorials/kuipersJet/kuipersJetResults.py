@@ -60,45 +60,15 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 "tutorials", "lib"))
 import kuipersJetRecord  # noqa: E402 (beside this file)
 import kuipersJetSlabs as slabs  # noqa: E402 (beside this file)
+# the case's constants and the readers it shares with kuipersJetPlots.py
+# (beside this file); its importers (kuipersJetGasBudget, kuipersJetFirstBubble,
+# compareSolvers, the regression test) still find them here
+from kuipersJetData import (AXIS, CELL_VOLUME, CLOSE_PACK, DEPTH, G,  # noqa: E402
+                            WIDTH, cell_grid, mean_abs_difference,
+                            reference_profiles, solids_field, to_grid)
 import mppicPost as post  # noqa: E402 (tutorials/lib)
 from mppicPost import (control_entry, function_object_table,  # noqa: E402
-                       internal_field, interpolate, percentile, time_dirs)
-
-WIDTH, DEPTH, G = 0.57, 0.015, 9.81
-CLOSE_PACK, AXIS = 0.62, 0.285
-CELL_VOLUME = 0.0075*0.01*0.0075
-
-
-def solids_field(case, time, mean=False):
-    """Cell solids fraction: alpha.kinematicCloud[Mean], else 1 - alpha.air."""
-    suffix = "Mean" if mean else ""
-    path = os.path.join(case, time, "alpha.kinematicCloud" + suffix)
-    if os.path.exists(path):
-        return internal_field(path)
-    path = os.path.join(case, time, "alpha.air" + suffix)
-    if os.path.exists(path):
-        return [1 - a for a in internal_field(path)]
-    return None
-
-
-def cell_grid(case):
-    """Cell centres -> (column, row) indices, the x and y of the columns/rows."""
-    centres = internal_field(os.path.join(case, "0", "C"))
-    xs = sorted(set(round(c[0], 7) for c in centres))
-    ys = sorted(set(round(c[1], 7) for c in centres))
-    ix = {x: i for i, x in enumerate(xs)}
-    iy = {y: j for j, y in enumerate(ys)}
-    return [(ix[round(c[0], 7)], iy[round(c[1], 7)]) for c in centres], xs, ys
-
-
-def to_grid(values, cells, nx, ny):
-    """Average over the depth: grid[j][i]."""
-    total = [[0.0]*nx for _ in range(ny)]
-    count = [[0]*nx for _ in range(ny)]
-    for v, (i, j) in zip(values, cells):
-        total[j][i] += v
-        count[j][i] += 1
-    return [[t/max(c, 1) for t, c in zip(tr, cr)] for tr, cr in zip(total, count)]
+                       percentile, time_dirs)
 
 
 def bed_expansion(grid, ys, level=0.05):
@@ -139,25 +109,6 @@ def sampled_profiles(case):
             eps = [sum(s[i][1] for s in sides)/len(sides) for i in range(len(h))]
             out[x_cm] = (h, eps)
     return out
-
-
-def csv_rows(name):
-    """Rows of a csv file beside this script (comment lines skipped)."""
-    return [line.strip().split(",") for line in open(os.path.join(HERE, name))
-            if line.strip() and not line.startswith("#")][1:]
-
-
-def reference_profiles():
-    data = {}
-    for src, x, h, e in csv_rows("kuipersJetProfiles.csv"):
-        data.setdefault((src, float(x)), []).append((float(h)/100, float(e)))
-    return {k: sorted(v) for k, v in data.items()}
-
-
-def mean_abs_difference(h, eps, measured):
-    diffs = [abs(v - e) for hm, e in measured
-             for v in [interpolate(h, eps, hm)] if v is not None]
-    return sum(diffs)/len(diffs) if diffs else float("nan")
 
 
 def packed_share(grid, level=0.59):
@@ -347,10 +298,11 @@ def table_row(res, label, wall, failure):
         slab, per_sim, failure or "no")
 
 
-def compare_runs(case, others, t0, label=None):
+def compare_runs(case, others, t0):
     """Profile distance between this run and each other run, and their
-    deltaP/weight and bed expansion; with a label, all their profiles in
-    kuipersJet_<label>_profiles.png (each run's latest sampled window)."""
+    deltaP/weight and bed expansion; returns every run's profiles, [(name,
+    profiles)] (each run's latest sampled window), which main() draws with
+    --plot into kuipersJet_<label>_profiles.png."""
     mine, base = sampled_profiles(case), summary(case, t0)
     print("run | profile 3.4 cm: mean abs difference from %s | 6.4 cm | "
           "deltaP/weight | bed expansion [m]" % case)
@@ -365,10 +317,7 @@ def compare_runs(case, others, t0, label=None):
         print("%s | %s | %s | %.3f | %.3f" % (
             other, cells[0], cells[1], res.get("dpRatio", float("nan")),
             res.get("expansion", float("nan"))))
-    if label:
-        from kuipersJetPlots import plot_profiles
-        plot_profiles(runs, os.path.join(case, "kuipersJet_%s_profiles.png" % label))
-    return 0
+    return runs
 
 
 def main():
@@ -381,8 +330,15 @@ def main():
     parser.add_argument("--record", metavar="FILE",
                         help="write the validation matrix's record to FILE")
     args = post.parse_results_args(parser, TABLE_HEAD)
+    # the plots module is imported here only (it imports kuipersJetData, not
+    # this module): --plot and --against --plot
     if args.against:
-        return compare_runs(args.case, args.against, args.t0, args.plot and args.label)
+        runs = compare_runs(args.case, args.against, args.t0)
+        if args.plot and args.label:
+            import kuipersJetPlots
+            kuipersJetPlots.plot_profiles(runs, os.path.join(
+                args.case, "kuipersJet_%s_profiles.png" % args.label))
+        return 0
 
     res = summary(args.case, args.t0)
     if args.row:
