@@ -17,7 +17,11 @@ terminal-velocity case, its run and records under <runDir> (-runRoot,
     command, the plot linked beside the records, a case with no record
     (vortexAdvection) marked "not run";
   - -list (list.log) shows the record; -resultsOnly on a case never run
-    exits 1 and leaves no record.
+    exits 1 and leaves no record;
+  - the page's comparison of code without its comments
+    (validationReport.without_comments): a change of comments and layout
+    gives the same text, a changed number or a changed string does not,
+    a // inside a string is kept.
 
 Usage: validationMatrix.py <runDir> <validate's exit status>
            <-resultsOnly's exit status> <commit>
@@ -27,6 +31,10 @@ import os
 import sys
 
 from checks import report, status
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "tutorials", "lib"))
+from validationReport import without_comments
 
 
 def check_record(records, rc, commit):
@@ -81,6 +89,21 @@ def check_list_and_results_only(run_dir, records, rc_missing):
            % rc_missing)
 
 
+def check_without_comments():
+    code = 'word name("a//b"); // the name\nscalar x = 1.5; /* a\n b */ y = x;'
+    layout = 'word name("a//b");\n/* other */ scalar   x = 1.5;\n\ny = x; // c'
+    report(without_comments(code) == without_comments(layout)
+           == 'word name("a//b"); scalar x = 1.5; y = x;',
+           "comments and layout only: the same text '%s'"
+           % without_comments(code))
+    report(without_comments(code)
+           != without_comments(code.replace("1.5", "1.6")),
+           "a changed number is a change")
+    report(without_comments(code)
+           != without_comments(code.replace("a//b", "a//c")),
+           "a changed string is a change")
+
+
 if __name__ == "__main__":
     run_dir, rc, rc_missing, commit = sys.argv[1], int(sys.argv[2]), \
         int(sys.argv[3]), sys.argv[4]
@@ -88,4 +111,5 @@ if __name__ == "__main__":
     check_record(records, rc, commit)
     check_page(run_dir, commit)
     check_list_and_results_only(run_dir, records, rc_missing)
+    check_without_comments()
     sys.exit(status())

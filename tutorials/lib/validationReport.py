@@ -14,7 +14,8 @@ the options the defaults leave off with what they change
 the command, the settings, and its plots (docs/validation/<png>). A case
 whose record was made on code older than the last change to src/,
 applications/ or its tutorial (results scripts and READMEs aside) is
-marked with its own commit; a case with no record says so.
+marked with its own commit, and says so when what changed since are
+comments and layout only; a case with no record says so.
 """
 import argparse
 import json
@@ -64,19 +65,77 @@ def git(project, *args):
         return ""
 
 
-def is_current(project, record, tutorial):
-    """True when no commit after the record's changed the code or the case
-    (its results scripts and README aside: -resultsOnly re-reads a run)."""
+def without_comments(text):
+    """C++ or OpenFOAM-dictionary text without its comments (// and /* */,
+    outside string and character literals), every run of white space one
+    blank: two texts that differ in comments and layout only give the
+    same."""
+    out = []
+    i, n = 0, len(text)
+    while i < n:
+        c = text[i]
+        if c in "\"'":
+            j = i + 1
+            while j < n and text[j] != c:
+                j += 2 if text[j] == "\\" else 1
+            out.append(text[i:j + 1])
+            i = j + 1
+        elif text.startswith("//", i):
+            j = text.find("\n", i)
+            i = n if j < 0 else j
+            out.append(" ")
+        elif text.startswith("/*", i):
+            j = text.find("*/", i + 2)
+            i = n if j < 0 else j + 2
+            out.append(" ")
+        else:
+            out.append(c)
+            i += 1
+    return " ".join("".join(out).split())
+
+
+def comment_style(path, text):
+    """True for a file whose comments are C++'s: sources, gmsh geometry and
+    OpenFOAM dictionaries (a FoamFile header)."""
+    return path.endswith((".C", ".H", ".c", ".h", ".geo")) \
+        or "FoamFile" in text[:2000]
+
+
+def changed_in_comments_only(project, commit, paths):
+    """True when every file under paths that changed from commit to HEAD is
+    a C++-style file changed in its comments or layout only."""
+    diff = git(project, "diff", "--name-status", commit, "HEAD", "--", *paths)
+    for line in diff.splitlines():
+        status, name = line.split("\t", 1)
+        if status != "M":
+            return False
+        old = git(project, "show", "%s:%s" % (commit, name))
+        new = git(project, "show", "HEAD:%s" % name)
+        if not comment_style(name, new) \
+                or without_comments(old) != without_comments(new):
+            return False
+    return True
+
+
+def code_state(project, record, tutorial):
+    """"current" when no commit after the record's changed the code or the
+    case (its results scripts and README aside: -resultsOnly re-reads a
+    run), "comments" when what changed since are comments and layout only,
+    else "older"."""
     if record.get("dirty"):
-        return False
-    changed = git(project, "log", "-1", "--format=%H", "--", "src",
-                  "applications", os.path.join("tutorials", tutorial),
-                  ":(exclude)*.py", ":(exclude)*.md")
+        return "older"
+    paths = ["src", "applications", os.path.join("tutorials", tutorial),
+             ":(exclude)*.py", ":(exclude)*.md"]
+    changed = git(project, "log", "-1", "--format=%H", "--", *paths)
     if not changed:
-        return False
-    return subprocess.run(["git", "-C", project, "merge-base",
-                           "--is-ancestor", changed, record["commit"]],
-                          capture_output=True).returncode == 0
+        return "older"
+    if subprocess.run(["git", "-C", project, "merge-base", "--is-ancestor",
+                       changed, record["commit"]],
+                      capture_output=True).returncode == 0:
+        return "current"
+    if changed_in_comments_only(project, record["commit"], paths):
+        return "comments"
+    return "older"
 
 
 def number(value):
@@ -109,10 +168,12 @@ def case_section(project, case, record, folder):
         return lines
     commit = record["commit"] + (" (with uncommitted changes)"
                                  if record.get("dirty") else "")
-    current = is_current(project, record, case["tutorial"])
+    state = code_state(project, record, case["tutorial"])
     lines.append("Run %s on commit `%s`%s by `%s`%s." % (
-        record["date"], commit,
-        "" if current else " (**older than the current code**)",
+        record["date"], commit, {
+            "current": "",
+            "comments": " (the code since differs in comments only)",
+            "older": " (**older than the current code**)"}[state],
         record["command"],
         ", %d s of wall time" % record["wallTime"]
         if record.get("wallTime") else ""))
@@ -163,7 +224,10 @@ def main():
         "(`bin/validate <case>`, list: `tutorials/validationCases`); its "
         "results script writes the record. A record made on code older "
         "than the last change to `src/`, `applications/` or the case's "
-        "tutorial (its results scripts and README aside) says so."
+        "tutorial (its results scripts and README aside) says so: "
+        "\"comments since\" where the code since differs from it in "
+        "comments and layout only (C++ sources, dictionaries and gmsh "
+        "files compared without their comments), \"older\" otherwise."
         % os.path.relpath(records_dir, project),
         "",
         "| case | figures met | commit | date |",
@@ -176,10 +240,11 @@ def main():
                 case["title"], anchor(case["title"])))
             continue
         rated = [r["met"] for r in record["rows"] if r["met"] is not None]
-        current = is_current(project, record, case["tutorial"])
+        state = code_state(project, record, case["tutorial"])
         out.append("| [%s](#%s) | %d of %d | `%s`%s | %s |" % (
             case["title"], anchor(case["title"]), sum(rated), len(rated),
-            record["commit"], "" if current else " (older)",
+            record["commit"], {"current": "", "comments": " (comments since)",
+                               "older": " (older)"}[state],
             record["date"]))
     out.append("")
     trade_offs = read_trade_offs(project)
