@@ -152,12 +152,14 @@ def check_write_times(c, mon, esc, mInjected, nParticle):
                    key=float)
     worstField = 0.0
     worstCell = (-1.0, None)
+    largestField = 0.0
     for t in times:
         lag = os.path.join(t, "lagrangian", "kinematicCloud")
         mass = math.fsum(lagrangian_masses(lag))
         tEsc = min(esc, key=lambda k: abs(k - float(t)))
         worstField = max(worstField, abs((mass + esc[tEsc][1])/mInjected - 1))
         alpha = c.post.internal_field(os.path.join(t, "alpha.kinematicCloud"))
+        largestField = max(largestField, max(alpha))
         for a, v in zip(alpha, V):
             excess = a - max(1.05*0.6, 0.6 + vParcel/v)
             if excess > worstCell[0]:
@@ -169,6 +171,15 @@ def check_write_times(c, mon, esc, mInjected, nParticle):
     check(worstCell[0] <= 1e-12, "every cell at every write time within "
           "max(1.05*0.6, 0.6 + V_parcel/V_cell) (closest: %.3g above the bound, %s)"
           % (worstCell[0], worstCell[1]))
+    # the record's count (mppicPost.cells_above_bound: each cell's solids
+    # fraction from the parcels' coordinates, nParticle and d) against the
+    # written field's
+    b = c.post.cells_above_bound(".", 0.6)
+    check(b["cellsAbove"] == 0 and b["times"] >= len(times)
+          and abs(b["largest"] - largestField) <= 1e-9*largestField,
+          "cells_above_bound: %d cells above at %d times, largest "
+          "%.10f from the parcels, %.10f in alpha.kinematicCloud"
+          % (b["cellsAbove"], b["times"], b["largest"], largestField))
     bound = 0.6 + vParcel/min(V)
     maxCell = max(r[4] for r in mon)
     check(maxCell <= bound, "largest cell solids fraction over the steps %.4f <= "

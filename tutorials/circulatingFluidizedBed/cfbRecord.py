@@ -7,6 +7,9 @@ of the run's constant/operatingConditions, from cfbResults.summary():
   - the standpipe inventory level above the bend's top (y 0.146; the
     experiment's datum is not public) against the experiment's height,
     within 0.052 m, beside MFiX-PIC's;
+  - the cells above their bound max(1.05 alpha_cp, alpha_cp + one parcel's
+    volume over the cell's) at every written time, from the parcels
+    (mppicPost.cells_above_bound): none;
   - the mass balance and the solids circulation (informational).
 The settings are read from the case's files and logs: the operating case's
 flows, the packing model and its coefficients, the deposit, the drag, the
@@ -123,11 +126,28 @@ def rows(res, number):
     return out
 
 
+def bound_row(case):
+    """The row of the cells above their bound, every written time."""
+    close_pack = post.dict_number(os.path.join(
+        case, "constant", "kinematicCloudProperties"), "closePackFraction")
+    b = post.cells_above_bound(case, close_pack)
+    return record.row(
+        "cells above their bound, every written time", b["cellsAbove"],
+        goal=record.at_most(0),
+        note="bound max(1.05 x %g, %g + one parcel's volume over the cell's; "
+        "a cell holds the parcel count nearest close pack) at %d written "
+        "times; the largest cell solids fraction %.3f is a cell of %.2g m3 "
+        "(bound %.3f; parcel %.2g m3)"
+        % (close_pack, close_pack, b["times"], b["largest"],
+           b["largestVolume"], b["largestBound"], b["parcelVolume"]))
+
+
 def write(path, res, case, plots=()):
     """Write the record of the run in case (nothing when path is None)."""
     if not path:
         return
     number = operating_case(case)
-    record.write(path, "cfb-%d" % number, rows(res, number), plots=plots,
+    record.write(path, "cfb-%d" % number,
+                 rows(res, number) + [bound_row(case)], plots=plots,
                  settings=settings(case, number, res),
                  window="%g-%g s" % (res["t0"], res["t1"]))

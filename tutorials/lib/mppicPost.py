@@ -230,6 +230,53 @@ def lagrangian_field(path):
     return [[float(v)] for v in body.split()]
 
 
+def cell_solids_fractions(case, time, volumes, cloud="kinematicCloud"):
+    """Each cell's solids fraction at a written time, from the parcels
+    themselves: sum of nParticle*pi/6*d^3 over the parcels whose
+    coordinates name the cell, over the cell volumes (a numpy array); and
+    the parcel volumes. None when the time holds no cloud."""
+    folder = os.path.join(case, time, "lagrangian", cloud)
+    if not os.path.exists(os.path.join(folder, "coordinates")):
+        return None, None
+    text = open(os.path.join(folder, "coordinates")).read()
+    cells = np.array(re.findall(r"\)\s+(-?\d+)\s+-?\d+\s+-?\d+", text),
+                     dtype=int)
+    n = np.array(lagrangian_field(os.path.join(folder, "nParticle")))[:, 0]
+    d = np.array(lagrangian_field(os.path.join(folder, "d")))[:, 0]
+    parcel = n*math.pi/6*d**3
+    return np.bincount(cells, weights=parcel,
+                       minlength=len(volumes))/volumes, parcel
+
+
+def cells_above_bound(case, close_pack, cloud="kinematicCloud"):
+    """The cells' solids fractions (cell_solids_fractions) at every written
+    time against each cell's bound max(1.05 alpha_cp, alpha_cp +
+    V_parcel/V_cell): a cell may hold the parcel count nearest close pack,
+    so one parcel more than close pack at most. Needs the cell volumes
+    written at time 0 (postProcess -func writeCellVolumes). A dict: times
+    read, the most cells above their bound at one time, the largest
+    solids fraction, its cell's bound and volume, and the largest parcel
+    volume."""
+    volumes = np.asarray(internal_field(os.path.join(case, "0", "V")),
+                         dtype=float)
+    out = {"times": 0, "cellsAbove": 0, "largest": 0.0, "largestBound": 0.0,
+           "largestVolume": 0.0, "parcelVolume": 0.0}
+    for t, d in time_dirs(case):
+        alpha, parcel = cell_solids_fractions(case, d, volumes, cloud)
+        if alpha is None:
+            continue
+        bound = np.maximum(1.05*close_pack, close_pack + parcel.max()/volumes)
+        out["times"] += 1
+        out["cellsAbove"] = max(out["cellsAbove"],
+                                int((alpha > bound*(1 + 1e-9)).sum()))
+        i = int(np.argmax(alpha))
+        if alpha[i] > out["largest"]:
+            out.update(largest=float(alpha[i]), largestBound=float(bound[i]),
+                       largestVolume=float(volumes[i]))
+        out["parcelVolume"] = max(out["parcelVolume"], float(parcel.max()))
+    return out
+
+
 def layer_means(values, centres, axis=1, digits=9):
     """Means of a cell field over the layers of cells at one height (the
     centres' coordinate along axis, rounded to digits): (heights, means),
