@@ -9,64 +9,69 @@ Group
 
 Description
     Transient PIMPLE solver for an incompressible gas carrying one MPPIC
-    parcel cloud (basicKinematicMPPICCloud), with the gas volume fraction
-    seen by both phases.
+    parcel cloud (leanKinematicMPPICCloud: basicKinematicMPPICCloud with
+    LeanMPPICCloud's step), with the gas volume fraction seen by both
+    phases. Stock MPPICFoam's equations and step of OpenFOAM v1912, so that
+    both solvers give the same answer on the same case
+    (tests/regression/solverParity); the models of libmppicModels are
+    linked in and selectable at run time.
 
     The gas momentum equation is written per unit gas density, in the
     volume-fraction-weighted form
 
         d(ag U)/dt + div(ag phi U) - U (d(ag)/dt + div(ag phi))
-          + div(ag R_eff) = -grad(p) + g + F_cloud/rho_g
+          + div(ag R_eff) = -grad(p) + g + F_cloud/rho_g + S (u_s - U)
+
+    with the gas continuity
+
+        d(ag)/dt + div(ag phi) = S
 
     where ag = max(1 - theta, 1 - alphaMax) is the gas fraction from the
-    cloud's volume fraction theta, p is kinematic and F_cloud the momentum
-    the parcels give back (implicit part in the matrix, explicit part with
-    gravity distributed as a face flux, so that a bed at rest is balanced
-    by the pressure gradient without spurious velocities). Pressure-velocity
-    coupling by PIMPLE with the gas continuity d(ag)/dt + div(ag phi) = 0.
+    cloud's solids fraction theta, p is kinematic, F_cloud the momentum
+    the parcels give back and S the gas volume that libmppicModels'
+    gasMassSources (constant/gasMassSources, MFiX's point sources) add per
+    unit volume and time, spread over the cells within a sphere and
+    arriving with their own velocity u_s (zero without that file).
 
-    Stock MPPICFoam's equations and step of OpenFOAM v1912, so that both
-    solvers give the same answer on the same case
-    (tests/regression/solverParity); the models of libmppicModels are
-    linked in and selectable at run time. Two PIMPLE options change the
-    coupling (below); both are off by default.
-
-    With solidsSubCycling active in the cloud's properties, the parcels
-    cross each gas step in sub-steps of MFiX-PIC's eq 24 (SolidsSubCycle:
-    CFL, response time, gas step), with the gas frozen and the momentum
-    exchange averaged over the gas step; inactive, the step is unchanged.
-    Each step prints the number of parcels and the largest cell solids
-    fraction of the cloud (before the alphaMax limit) and, when the cloud
-    has a packing model, runs libmppicModels' packingMonitor (written to
-    postProcessing/packingMonitor; "packingMonitor off;" in
-    system/controlDict turns it off). Writes U.<gas>,
-    p (kinematic), alpha.<gas> and alpha.<cloud> (solids fraction).
-
-    Cell velocities are reconstructed from face fluxes with libmppicModels'
-    reconstructFlux, which gives fvc::reconstruct's result without its
-    aliasing (OpenFOAM v1912 built with GCC 12 gets fvc::reconstruct wrong
-    on non-orthogonal cells: tetrahedra, sheared hexahedra; see
-    reconstructFlux.H). On orthogonal hexahedra the two are the same, and so
-    are the answers of this solver and stock MPPICFoam.
-
-    The gas fraction is one minus the solids fraction deposited per cell
-    (solidsFractionFrom cell, the default, as MPPICFoam) or by the cloud's
-    averagingMethod (solidsFractionFrom averaging, as MFiX-PIC deposits
-    with its kernel): see solidsFractionDeposition.
+    Each time step:
+    1. The time step from the gas Courant number (adjustTimeStep, maxCo).
+    2. The cloud moves through the step; with solidsSubCycling active in
+       the cloud's properties, in sub-steps of MFiX-PIC's eq 24
+       (SolidsSubCycle: CFL, response time, gas step) with the gas frozen
+       and the momentum exchange averaged over the gas step.
+    3. The solids fraction theta is deposited per cell (solidsFractionFrom
+       cell, the default, as MPPICFoam) or by the cloud's averagingMethod
+       (solidsFractionFrom averaging, as MFiX-PIC deposits with its
+       kernel: solidsFractionDeposition), and ag updated. The step prints
+       the number of parcels and the largest cell solids fraction (before
+       the alphaMax limit).
+    4. The cloud's momentum source is split: the implicit part in the gas
+       matrix, the explicit part with gravity distributed as a face flux,
+       so that a bed at rest is balanced by the pressure gradient without
+       spurious velocities.
+    5. PIMPLE loop: momentum predictor and pressure correctors with the
+       continuity above. Cell velocities are reconstructed from face
+       fluxes with libmppicModels' reconstructFlux: fvc::reconstruct's
+       result without its aliasing on non-orthogonal cells (see
+       reconstructFlux.H); the same as fvc::reconstruct on orthogonal
+       hexahedra.
+    6. With balanceImplicitDrag, the parcels get the drag the gas got
+       (implicitDragBalance).
+    7. When the cloud has a packing model, libmppicModels' packingMonitor
+       (postProcessing/packingMonitor; "packingMonitor off;" in
+       system/controlDict turns it off); then the fields are written:
+       U.<gas>, p (kinematic), alpha.<gas> and alpha.<cloud> (solids
+       fraction).
 
     With constant/prescribedGasFlowProperties (libmppicModels'
     prescribedGasFlow, e.g. "type vortex; period 0.25;") the gas is not
     solved: U.<gas> and phi.<gas> follow the analytic field, at mid-step
     while the parcels move (see createPrescribedGasFlow.H).
 
-    With constant/gasMassSources (libmppicModels' gasMassSources, MFiX's
-    point sources) gas is added inside the domain: a volumetric flow spread
-    over the cells within a sphere, in the continuity (the pressure
-    equation's right-hand side) and, with its own velocity, in the momentum.
-
 Usage
     mppicPimpleFoam [-cloud <name>] [-parallel]
 
+    The cloud's name is kinematicCloud unless -cloud gives another.
     Reads constant/transportProperties (continuousPhase <name>; rho.<name>;
     transportModel, nu), constant/<cloud>Properties (the cloud, with
     constantProperties/alphaMax), constant/turbulenceProperties.<name>,
@@ -92,26 +97,17 @@ Usage
     packed cell and the freeboard or a fixed-velocity inflow, or at the
     edge of a falling mixture, the face's resistance is that of its two
     half cells in series, 1/interpolate(A); MPPICFoam's interpolate(1/A)
-    adds their conductances as if in parallel. A fixed bed 20 cells high
-    at 0.12 m/s (tutorials/validation/minimumFluidization) gets 0.993 of
-    Ergun's pressure drop with the series form, 0.963 with MPPICFoam's, and
-    Rayleigh-Taylor's mixture falls faster (alpha 0.053/0.042/0.043 at
-    particle densities 3/5/7 against 0.037 at 5); but the uniform bed's
-    gas carries 1.030/0.975 of its weight at 3/8 parcels per packed cell
-    against 1.007/1.005 with MPPICFoam's form (docs/VALIDATION.md), which
-    is therefore the default. No MFiX equivalent (MFiX solves its momentum
-    on a staggered grid).
+    adds their conductances as if in parallel. Off by default: MPPICFoam's
+    form. No MFiX equivalent (MFiX solves its momentum on a staggered
+    grid).
 
     The drag balance: with semi-implicit drag the gas takes the drag at its
     new velocity and the parcels took it at the old one; in beds whose
-    parcels cross cells the difference keeps one sign, and the parcels got
-    more drag than the gas's pressure drop shows (0.06-0.08 of the bed's
-    weight in the uniform bed at 3 parcels per packed cell and in the
-    Kuipers jet). The balance removes the difference, but in a bed at rest
-    it lifts the parcels by the drag's change each step: a fixed bed under
-    a rising inflow lost half its pressure drop (0.17 of the weight at
-    0.06 m/s against Ergun's 0.30), so it is off by default
-    (docs/VALIDATION.md, options the defaults leave off).
+    parcels cross cells the difference keeps one sign, and the parcels get
+    more drag than the gas's pressure drop shows. The balance removes the
+    difference, but in a bed at rest it lifts the parcels by the drag's
+    change each step (a fixed bed under a rising inflow loses part of its
+    pressure drop), so it is off by default.
 
 \*---------------------------------------------------------------------------*/
 

@@ -11,10 +11,11 @@ Group
 Description
     Transient PIMPLE solver for a compressible, multi-species, laminar gas
     carrying one MPPIC parcel cloud that exchanges momentum, heat and mass
-    with it (libmppicModels' basicReactingMPPICCloud: OpenFOAM's reacting
-    parcels, with its heat-transfer, composition and phase-change models,
-    over MPPIC parcels, with the packing, damping, isotropy, drag and
-    averaging models of OpenFOAM and libmppicModels).
+    with it (leanReactingMPPICCloud: libmppicModels'
+    basicReactingMPPICCloud, OpenFOAM's reacting parcels, with its
+    heat-transfer, composition and phase-change models, over MPPIC parcels,
+    with the packing, damping, isotropy, drag and averaging models of
+    OpenFOAM and libmppicModels; with LeanMPPICCloud's step).
 
     The gas fraction ag = max(1 - theta, 1 - alphaMax) of the cloud's
     solids fraction theta enters every gas equation:
@@ -34,19 +35,26 @@ Description
     with gravity as face fluxes); S_rho, S_Yi, S_h and F_cloud are the
     cloud's Srho, SYi, Sh and SU.
 
-    What it shares with mppicPimpleFoam is written once: the -cloud option
-    and the cloud's name (mppicCommon/addCloudOption.H, readCloudName.H),
-    the gas fraction field (createGasFraction.H) and the cloud's share of
-    it (createCloudGasFraction.H, updateCloudGasFraction.H), the cloud's
-    step (evolveCloud.H), the split of its momentum source
-    (cloudMomentumSource.H), the construction of the cloud
-    (newCloudOrExit.H), the packing monitor (createPackingMonitor.H), the
-    end of a time step (writeTimeStep.H), the
-    solids sub-cycling (libmppicModels'
-    SolidsSubCycle, which sums the momentum, enthalpy and species sources
-    over the sub-steps: CloudSourceSum) and the solids deposition
-    (solidsFractionDeposition). Cell velocities come from face fluxes by
-    libmppicModels' reconstructFlux (see mppicPimpleFoam).
+    Each time step (the steps shared with mppicPimpleFoam are written once,
+    in mppicCommon/):
+    1. The time step from the gas Courant number (adjustTimeStep, maxCo).
+    2. The cloud moves through the step (evolveCloud.H), in sub-steps with
+       solidsSubCycling (libmppicModels' SolidsSubCycle, which sums the
+       momentum, enthalpy and species sources over the sub-steps:
+       CloudSourceSum); the solids fraction is deposited
+       (solidsFractionDeposition) and the gas fraction updated
+       (updateCloudGasFraction.H); the cloud's momentum source is split
+       into its implicit and explicit parts (cloudMomentumSource.H).
+    3. With a single PIMPLE outer corrector, the gas continuity for rho.
+    4. PIMPLE loop: momentum, species and energy, then the pressure
+       correctors. Cell velocities come from face fluxes by
+       libmppicModels' reconstructFlux (see mppicPimpleFoam).
+    5. The packing monitor and the write (writeTimeStep.H).
+    Also shared: the -cloud option and the cloud's name (addCloudOption.H,
+    readCloudName.H), the gas fraction field (createGasFraction.H) and the
+    cloud's share of it (createCloudGasFraction.H), the construction of
+    the cloud (newCloudOrExit.H) and the packing monitor
+    (createPackingMonitor.H).
 
 Usage
     mppicReactingPimpleFoam [-cloud <name>] [-parallel]

@@ -11,21 +11,22 @@ Group
 Description
     Writes a cell-to-processor list (constant/cellDecomposition, for
     decomposePar's method manual) that gives each processor about the same
-    work, counting the parcels as well as the cells: each cell weighs
-        w = 1 + parcelWeight*(parcels in the cell),
-    the parcels being those of the injection's positions file. The cells
-    are cut as decomposePar's simple method cuts them, n = (nx ny nz)
-    slabs one direction after the other (x, then y within each x slab,
-    then z), but at equal weight instead of equal cell count. A bed that
-    fills half of a column then gets as many parcels on each processor as
-    the gas cells allow, where simple's equal cell counts put the bed on
-    one processor and the freeboard on the other.
+    work, counting the parcels as well as the cells. A bed that fills half
+    of a column then gets as many parcels on each processor as the gas
+    cells allow, where simple's equal cell counts put the bed on one
+    processor and the freeboard on the other.
 
-    parcelWeight is the cost of a parcel relative to a cell: measured on
-    the Kuipers jet, a step costs about 1.9 us per cell (the gas) and 1.6 us
-    per parcel (the cloud), so the default is 1.
-
-    Prints, per processor, the cells, the parcels and the weight.
+    1. Each cell weighs
+           w = 1 + parcelWeight*(parcels in the cell),
+       the parcels being those of the injection's positions file;
+       parcelWeight is the cost of a parcel relative to a cell (a step of
+       the cloud costs about as much per parcel as the gas's per cell:
+       default 1).
+    2. The cells are cut as decomposePar's simple method cuts them,
+       n = (nx ny nz) slabs one direction after the other (x, then y
+       within each x slab, then z), but at equal weight instead of equal
+       cell count.
+    3. Prints, per processor, the cells, the parcels and the weight.
 
 Usage
     mppicDecomposeByParcels [-positions <file>] [-report]

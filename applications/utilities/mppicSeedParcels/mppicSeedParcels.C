@@ -10,11 +10,10 @@ Group
 Description
     Fills a box or a cellZone with parcels at a target solids fraction, a
     given number of parcels per cell or particles per parcel, on a jittered
-    lattice or per cell, and writes the
-    positions file of manualInjection together with the number of particles
-    per parcel. Beds then start at the intended packing instead of the
-    Poisson over-packing of random seeding (at 5 parcels per cell, random
-    seeding puts some cells at twice the mean).
+    lattice or per cell, and writes the positions file of manualInjection
+    together with the number of particles per parcel. Beds then start at
+    the intended packing instead of the Poisson over-packing of random
+    seeding.
 
     Three arrangements (parcelArrangements.H):
     - cell: exactly N parcels in every cell of the region, at the centres
@@ -27,14 +26,14 @@ Description
       direction at a time, so that a region one cell deep still gets N per
       cell), jittered likewise, a point kept when it lies in a cell of the
       region. On cubic cells it gives N per cell on average; on cells that
-      are not cubes the lattice and the cells beat: on the Kuipers jet's
-      0.75 x 1 cm cells 2 to 12 parcels per cell for N = 5;
+      are not cubes the lattice and the cells beat, and the counts per
+      cell spread widely around N;
     - volume: round(N*V_cell/V_mean) parcels in each cell (V_mean the
       region's mean cell volume), each at a uniformly random point of the
       cell, so that every cell starts at the target fraction to within half
       a parcel, whatever its size and shape. Use it on tetrahedra and other
-      unstructured cells, where the lattice puts up to twice the mean
-      count in some cells and the cell arrangement fills bounding boxes.
+      unstructured cells, where the lattice's counts per cell are uneven
+      and the cell arrangement fills bounding boxes.
     Each parcel carries
         nParticle = alpha_s*V_region/(nParcels*pi*d^3/6)
     particles, so that the seeded solids volume is alpha_s*V_region exactly.

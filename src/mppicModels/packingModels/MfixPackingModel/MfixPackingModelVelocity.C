@@ -3,19 +3,20 @@
     This file is part of the mppicModels project, GPL-3.0-or-later.
 -------------------------------------------------------------------------------
 Description
-    A parcel's velocity is written once in a packing step, by one of the
-    two functions below. The models give a parcel
-    the velocity it keeps through keepAfterTrack only:
-    - without conserveMomentum, keepAfterTrack writes U = kept - move at
-      once; the correction track (LeanMPPICCloud::correctionTrack in
-      mppicPimpleFoam, MPPICParcel's tpCorrectTrack in stock MPPICFoam),
-      which moves the parcel by move*dt and adds move to U, leaves it kept
-      (the models run in stock MPPICFoam too, whose track adds the move);
-    - with conserveMomentum, keepAfterTrack records kept, and
-      applyReactions writes kept plus the parcel's share of the reactions
-      at cacheFields(false), after the track (the reactions need every
-      parcel's impulse of the step first: PackReactions). The track moves
-      the parcel by the correction alone, whatever its velocity.
+    The velocity a parcel keeps in a packing step, written once in the
+    step by one of the two functions below; the models give it through
+    keepAfterTrack only:
+    1. without conserveMomentum, keepAfterTrack writes U = kept - move at
+       once; the correction track (LeanMPPICCloud::correctionTrack in
+       mppicPimpleFoam, MPPICParcel's tpCorrectTrack in stock MPPICFoam,
+       where the models run too), which moves the parcel by move*dt and
+       adds move to U, leaves it kept;
+    2. with conserveMomentum, keepAfterTrack records kept, and
+       applyReactions writes kept plus the parcel's share of the
+       reactions at cacheFields(false), after the track (the reactions
+       need every parcel's impulse of the step first: PackReactions). The
+       track moves the parcel by the correction alone, whatever its
+       velocity.
     A parcel given no kept ends with U + move, the track's sum, plus with
     conserveMomentum its share of the reactions.
 

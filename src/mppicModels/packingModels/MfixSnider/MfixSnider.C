@@ -28,8 +28,8 @@ Foam::PackingModels::MfixSnider<CloudType>::checkedCoeffs
     const dictionary& coeffs
 )
 {
-    // The gas cannot take the limiter's reactions at once: on MFiX-PIC's
-    // deposit the uniform bed's gas diverged within 0.04 s
+    // The gas cannot take the limiter's reactions at once: its solution
+    // diverges
     if (coeffs.lookupOrDefault<word>("conserveMomentum", "none") == "gas")
     {
         FatalIOErrorInFunction(coeffs)
@@ -236,8 +236,8 @@ void Foam::PackingModels::MfixSnider<CloudType>::cacheFields(const bool store)
         // the mean of the final velocities is taken; a held pack whose fall
         // the support stopped in this step hands the part down along
         // gravity to it (CapacityLimit::settledVelocity; kept by its
-        // parcels, the drag of that fall raised a fixed bed's pressure drop
-        // to 2 x Ergun's)
+        // parcels, the drag of that fall would raise a fixed bed's
+        // pressure drop)
         if (this->conserveMomentum())
         {
             this->applyReactions(limit_);

@@ -108,7 +108,7 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
         // forms the mean solids velocity; without this the mean of the
         // parcels held at a wall points into it, and the limiter's
         // reflection about that mean drives them faster into the wall
-        // every step (-5 to -19 m/s in four steps, measured)
+        // every step
         kept =
             cellFaceGeometry::withoutVelocityIntoBoundary
             (

@@ -4,9 +4,24 @@
 -------------------------------------------------------------------------------
 Description
     ParcelEntries' correction of a parcel: where its correction move may
-    take it (back into the cell that it came from when refused, here or on
-    another processor, else within its own cell) and the velocity it keeps
-    (included by ParcelEntries.H).
+    take it, and the velocity it keeps (included by ParcelEntries.H).
+
+    limitedCorrection, by the parcel's entry:
+    1. pushed on: into the face neighbour it makes room in, toward that
+       cell's centre, just past the face (1 % of the way across the cell);
+    2. refused, from a known cell here or on another processor: back into
+       that cell, aiming at its centre (a face or an edge/corner
+       neighbour), the rules' move held between 1 % and 99 % of the way
+       across it;
+    3. refused, from a cell not known (an injected parcel that came in
+       through a processor face): back out of its cell the way it came
+       in, between 1 % and 49 % of the cell's size beyond the face;
+    4. otherwise the rules' move, shortened to stay within its own cell
+       (99 % of the way to the face ahead).
+    A move across a processor face is lengthened for OpenFOAM v1912's
+    correction track (trackLength), not for LeanMPPICCloud's.
+    keptVelocity: a refused parcel keeps no velocity into the refusing
+    cell relative to that cell's parcels.
 
 \*---------------------------------------------------------------------------*/
 

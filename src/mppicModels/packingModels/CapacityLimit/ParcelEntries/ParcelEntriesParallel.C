@@ -3,12 +3,17 @@
     This file is part of the mppicModels project, GPL-3.0-or-later.
 -------------------------------------------------------------------------------
 Description
-    ParcelEntries in parallel: the records of the parcels that moved to
-    another processor, the refused parcels that go back, and the held state
-    of the cells they go back to, exchanged between processors (included by
-    ParcelEntries.H). Every processor sends to every other, so that a parcel
-    that crossed several processors in one move is still found; the lists
-    hold only the parcels that crossed a processor face in this step.
+    ParcelEntries in parallel (included by ParcelEntries.H): what the
+    processors exchange in a step.
+    1. shareDepartures: the records of the parcels that moved to another
+       processor (with their cells' centres and faces), received as the
+       origins of the parcels that arrived;
+    2. returnRefused: the refused parcels that go back to a cell on
+       another processor, until no processor sends any;
+    3. shareHeld: the held state of the cells they go back to.
+    Every processor sends to every other, so that a parcel that crossed
+    several processors in one move is still found; the lists hold only
+    the parcels that crossed a processor face in this step.
 
 \*---------------------------------------------------------------------------*/
 

@@ -6,48 +6,47 @@ Description
     ParcelEntries' push-through (pushThrough): a full cell that refuses an
     entrant takes it after all when it can pass one of its own parcels on,
     through full cells, to the nearest cell with room (included by
-    ParcelEntries.H).
+    ParcelEntries.H). A cell takes an entrant only when one of its own
+    parcels has left in the same step, and a packed region that moves as
+    a whole (a bed lifted from below, an emulsion pushed aside by a
+    bubble) has its crossings at different steps in different cells, so
+    every cell it moves into refuses and the region could start to move
+    only at its free surface. Pushed on, each cell of the chain gives one
+    parcel and takes one, and the last cell, which had room, takes one
+    more: the packed region moves by one parcel's volume, as an
+    incompressible one would.
 
-    Why: a cell takes an entrant only when one of its own parcels has left
-    in the same step. A packed region that moves as a whole (a bed lifted
-    from below, an emulsion pushed aside by a bubble) has its crossings at
-    different steps in different cells, so every cell it moves into
-    refuses, and the region cannot start moving anywhere but at its free
-    surface. Pushed on, each cell of the chain gives one parcel and takes
-    one, and the last cell, which had room, takes one more: the packed
-    region moves by one parcel's volume, as an incompressible one would.
-
-    Only an entrant that came out of a full cell is pushed on (it belongs
-    to a packed region on the move); one from a cell that had room for it
-    (a parcel falling out of a suspension onto a bed) lands on the pack:
-    pushed on, such parcels carried a settling bed's surface up by 7 % of
-    its height (measured) and shuffled a bed at rest.
-
-    The chain: a breadth-first search from the refusing cell through face
-    neighbours (not back into the cell the entrant came from), through
-    cells that have a parcel that stayed in them (internal faces only: in
-    parallel a chain stays on its processor), to the nearest cells with
-    room for the entrant's volume (cellRoom::fits: exact for parcels of one
-    size, the pushed parcel may be larger), nearest by the number of faces
-    crossed; at most maxChainCells cells are visited. The entrant's volume
-    goes to the nearest room, whichever way, as an incompressible
-    emulsion's would. Of several equally near, the entrant's pushOrderKey
-    (a hash of its identity and the step) picks one, and the refusing
-    cells are served in the order of that key, not in the mesh's: the
-    mesh's numbering preferred no direction before only by chance (the
-    lowest-numbered first sent the Kuipers jet's pushes toward its left
-    wall); a continued
-    or re-ordered run chooses the same. Each cell of the chain pushes
-    the parcel that stayed in it and lies furthest toward the next cell
-    (level parcels, within 1e-9 of the distance between the cells, by
-    their lower (origProc, origId)).
-    (Chains only ahead of the entrant, or none for falling entrants, left
-    the refusals of falling parcels alone and the Kuipers jet's bed was
-    held up by them.)
-    In parallel a chain stays on its processor, and an entrant from another
-    processor pushed on here has been counted back in its old cell there
-    for the step: over the Kuipers jet's statistics window 2 ranks do not
-    give the serial answer.
+    After the admissions (admitUpToClosePack), pushRefusedOn:
+    1. takes as pushed on only a refused entrant that came out of a full
+       cell (a packed region on the move; one from another processor is
+       taken as such); one from a cell that had room for it (a parcel
+       falling out of a suspension onto a bed) lands on the pack, as
+       pushing such parcels on would carry a settling bed's surface up
+       and shuffle a bed at rest;
+    2. serves the refusing cells in the order of their first refused
+       entrant's pushOrderKey (a hash of its identity and the step), not
+       in the mesh's numbering, so that a continued or re-ordered run
+       chooses the same;
+    3. finds the chain by a breadth-first search, level by level (the
+       cells as many faces away), from the refusing cell through face
+       neighbours (not back into the cell the entrant came from; internal
+       faces only: in parallel a chain stays on its processor), through
+       cells that have a parcel that stayed in them not yet pushed, to
+       the nearest cells with room for the entrant's volume
+       (cellRoom::fits: exact for parcels of one size, the pushed parcel
+       may be larger); at most maxChainCells cells are visited;
+    4. of several equally near cells with room, takes the one the
+       entrant's pushOrderKey picks: the entrant's volume goes to the
+       nearest room, whichever way, as an incompressible emulsion's would;
+    5. down the chain from that cell, has each cell push the parcel that
+       stayed in it and lies furthest toward the next cell (level
+       parcels, within 1e-9 of the distance between the cells, by their
+       lower (origProc, origId)) into it;
+    6. admits the entrant, and counts the push toward which of -x, +x,
+       -y, +y, -z, +z its room lay.
+    In parallel an entrant from another processor pushed on here has been
+    counted back in its old cell there for the step (one parcel too many
+    there, never too few).
 
 \*---------------------------------------------------------------------------*/
 
@@ -99,10 +98,6 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
         );
     };
 
-    // The refusing cells in an order the mesh's numbering does not set
-    // (in the cells' order the lowest-numbered took the rooms first: on
-    // the Kuipers mesh, numbered column by column from the left wall, the
-    // left side's), by their first refused entrant's pushOrderKey
     // A refused entrant that came out of a full cell (a packed region
     // moving as a whole; from another processor: its cell's load is not
     // known here, taken as full) is pushed on; one that came from a cell
@@ -127,6 +122,10 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
                 candidate.volume, closePackFraction*mesh.V()[from] - load[from]
             );
     };
+
+    // The refusing cells in an order the mesh's numbering does not set
+    // (in the cells' order the lowest-numbered would take the rooms
+    // first), by their first refused entrant's pushOrderKey
     const label timeIndex = mesh.time().timeIndex();
     std::vector<std::pair<std::uint64_t, label>> order;
     forAll(entrants, celli)
@@ -224,8 +223,7 @@ Foam::label Foam::ParcelEntries<CloudType>::pushRefusedOn
 
                 // Of the nearest cells with room, the one the entrant's
                 // pushOrderKey picks, not the first found (the
-                // lowest-numbered neighbour first: on the Kuipers mesh
-                // every tie went to -x)
+                // lowest-numbered neighbour, a preferred direction)
                 if (rooms.size())
                 {
                     const parcelType& p = *candidate.parcel;
