@@ -32,7 +32,8 @@ def load(path, name):
     return module
 
 
-kuipers = load(os.path.join(TOP, "tutorials", "kuipersJet", "kuipersJetResults.py"),
+kuipers = load(os.path.join(TOP, "tutorials", "validation", "kuipersJet",
+                            "kuipersJetResults.py"),
                "kuipersJetResults")
 uniform = load(os.path.join(TOP, "tutorials", "validation", "uniformFluidization",
                             "uniformFluidizationResults.py"),
