@@ -4,7 +4,7 @@
 Usage:
     stepStudyTable.py RUNDIR [--plot PNG]
 
-Reads RUNDIR/kj_* (tutorials/kuipersJet runs) with the Kuipers jet's
+Reads RUNDIR/kj_* (tutorials/validation/kuipersJet runs) with the Kuipers jet's
 results module and RUNDIR/uf_* (tutorials/validation/uniformFluidization)
 with the uniform bed's, and prints one markdown table per case: the step,
 what else differs, the wall seconds per simulated second (run.info, the
@@ -32,7 +32,8 @@ def load(path, name):
     return module
 
 
-kuipers = load(os.path.join(TOP, "tutorials", "kuipersJet", "kuipersJetResults.py"),
+kuipers = load(os.path.join(TOP, "tutorials", "validation", "kuipersJet",
+                            "kuipersJetResults.py"),
                "kuipersJetResults")
 uniform = load(os.path.join(TOP, "tutorials", "validation", "uniformFluidization",
                             "uniformFluidizationResults.py"),

@@ -42,6 +42,17 @@ def status():
     return 1 if failures else 0
 
 
+def run_command(argv, commands):
+    """A test script's command line: run commands[argv[0]] (a function of
+    the remaining arguments, as strings); its return value, or status()
+    when it returns None. An unknown command stops the script."""
+    if not argv or argv[0] not in commands:
+        sys.exit("unknown command %s (allowed: %s)"
+                 % (argv[0] if argv else "", ", ".join(commands)))
+    rc = commands[argv[0]](*argv[1:])
+    return status() if rc is None else rc
+
+
 def read_list(path):
     """Values of a lagrangian scalar field file (ascii, N(...) or N{v})."""
     return [row[0] for row in read_rows(path)]

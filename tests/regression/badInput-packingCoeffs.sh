@@ -57,7 +57,7 @@ brokenInBoth()
     done
 }
 
-# A misspelt keyword (MfixPackingModel's check of every entry)
+# A misspelt keyword (DensePackingModel's check of every entry)
 brokenInBoth "holdSupportedPack true;" "unknown keyword holdSupportedPack" \
     "holdSupportedPacks" "closePackFraction"
 
@@ -76,7 +76,7 @@ runBroken "$runDir/case" mppicPimpleFoam
 check fatal "$runDir/case/log.broken" $rc "unknown keyword packAtClosePack" \
     || status=1
 
-# conserveMomentum takes none, packs or gas (MfixPackingModel)
+# conserveMomentum takes none, packs or gas (DensePackingModel)
 brokenInBoth "conserveMomentum true;" "conserveMomentum" "true" \
     "none" "packs" "gas"
 

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Checks of tests/regression/cfbAerationEntry.sh: where
-tutorials/circulatingFluidizedBed's Allrun puts the L-valve's aeration when
+tutorials/validation/circulatingFluidizedBed's Allrun puts the L-valve's aeration when
 it enters as a gas source, read from the solver's report of its gas mass
 sources ("aerationBend: Q m3/s over N cells, V m3, within 0.0127 m of
 (centre); velocity (U)") in <case>/log.mppicPimpleFoam, for the runs "leg"

@@ -1,7 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # cfbAerationEntry <runDir>
-# tutorials/circulatingFluidizedBed's Allrun with the L-valve's aeration
+# tutorials/validation/circulatingFluidizedBed's Allrun with the L-valve's aeration
 # (FTC135, Case 1: 6 SLPM, Q = 1e-4 m3/s) entering as a gas source, a few
 # steps each (-endTime 0.002): -aeration leg -equalArea and -aeration source
 # (nominal pipes); checks: cfbAerationEntry.py (the source's centre,
@@ -17,15 +17,15 @@ runDir="${1:?usage: cfbAerationEntry.sh <runDir>}"
 
 status=0
 bad="$runDir/bogus"
-copyTutorial circulatingFluidizedBed "$bad"
+copyTutorial validation/circulatingFluidizedBed "$bad"
 allrunRefuses "$bad" "-aeration bogus: not patch, source or leg" cfb.msh \
     -aeration bogus || status=1
 allrunRefuses "$bad" "-continue -parallel: no processor folders" log.mppicPimpleFoam \
     -continue -endTime 1 -parallel || status=1
 
-copyTutorial circulatingFluidizedBed "$runDir/leg"
+copyTutorial validation/circulatingFluidizedBed "$runDir/leg"
 PROGRESS_EVERY=0 runAllrun "$runDir/leg" -endTime 0.002 -equalArea -aeration leg || exit 1
-copyTutorial circulatingFluidizedBed "$runDir/source"
+copyTutorial validation/circulatingFluidizedBed "$runDir/source"
 PROGRESS_EVERY=0 runAllrun "$runDir/source" -endTime 0.002 -aeration source || exit 1
 
 cd "$runDir" || exit 1

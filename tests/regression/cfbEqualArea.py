@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Checks of tests/regression/cfbEqualArea.sh: the meshed cross-sections of
-tutorials/circulatingFluidizedBed's coarse mesh with and without -equalArea
+tutorials/validation/circulatingFluidizedBed's coarse mesh with and without -equalArea
 (the runs equalArea/ and nominal/), from the mesh's own cell centres and
 volumes (0/C, 0/V, read with the tutorial's cfbResults.post):
   - the 1" standpipe: the volume of the cells whose centres lie in

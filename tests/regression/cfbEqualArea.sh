@@ -1,7 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # cfbEqualArea <runDir>
-# tutorials/circulatingFluidizedBed's coarse mesh as its Allrun makes it, with
+# tutorials/validation/circulatingFluidizedBed's coarse mesh as its Allrun makes it, with
 # and without -equalArea (a few steps each, -endTime 0.002); checks:
 # cfbEqualArea.py (the meshed cross-sections of the standpipe and the riser
 # against the pipes' areas).
@@ -11,7 +11,7 @@ runDir="${1:?usage: cfbEqualArea.sh <runDir>}"
 
 for variant in nominal equalArea
 do
-    copyTutorial circulatingFluidizedBed "$runDir/$variant"
+    copyTutorial validation/circulatingFluidizedBed "$runDir/$variant"
     args="-endTime 0.002"
     [ "$variant" = equalArea ] && args="$args -equalArea"
     PROGRESS_EVERY=0 runAllrun "$runDir/$variant" $args || exit 1

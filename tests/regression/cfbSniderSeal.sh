@@ -1,7 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # cfbSniderSeal <runDir>
-# tutorials/circulatingFluidizedBed with seed 2's model: ./Allrun -packing
+# tutorials/validation/circulatingFluidizedBed with seed 2's model: ./Allrun -packing
 # mfixSnider -riserBed 0.16 -standpipeLevel 0.576 -equalArea -endTime 0.1
 # (coarse mesh, weight 64, Case 1; about 2 minutes). Allrun gives mfixSnider
 # the cloud's diffusion averaging over the mesh's cell size (MFiX-PIC's hat
@@ -18,7 +18,7 @@ runDir="${1:?usage: cfbSniderSeal.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 case="$runDir/case"
-copyTutorial circulatingFluidizedBed "$case"
+copyTutorial validation/circulatingFluidizedBed "$case"
 PROGRESS_EVERY=0 runAllrun "$case" -packing mfixSnider -riserBed 0.16 \
     -standpipeLevel 0.576 -equalArea -endTime 0.1 || exit 1
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The test's additions to tutorials/circulatingFluidizedBed and its checks
+"""The test's additions to tutorials/validation/circulatingFluidizedBed and its checks
 (tests/regression/circulatingFluidizedBed.sh): 120 tracer parcels (a second
 manualInjection, 4 particles each) on and around the axes of the exit tube
 and the crossover pipe, so that parcels leave through the outlet within the
@@ -208,15 +208,10 @@ def results():
 
 
 def main(argv):
-    if argv[0] == "tracerPositions":
-        write_tracer_positions(argv[1])
-    elif argv[0] == "tracerInjector":
-        add_tracer_injector(argv[1])
-    elif argv[0] == "results":
-        return results()
-    else:
-        sys.exit("unknown command %s" % argv[0])
-    return 0
+    return checks.run_command(argv, {
+        "tracerPositions": write_tracer_positions,
+        "tracerInjector": add_tracer_injector,
+        "results": results})
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # circulatingFluidizedBed <runDir>
-# tutorials/circulatingFluidizedBed as its Allrun runs it by default (coarse
+# tutorials/validation/circulatingFluidizedBed as its Allrun runs it by default (coarse
 # mesh, cellSize 0.014 m, statistical weight 64, coloringFunction, Case 1)
 # for 0.15 s (about 2-3 minutes with the meshing), with two additions of the
 # test: writePrecision 17 (so that masses compare to 1e-10), and 120 tracer
@@ -21,7 +21,7 @@ runDir="${1:?usage: circulatingFluidizedBed.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 case="$runDir/case"
-copyTutorial circulatingFluidizedBed "$case"
+copyTutorial validation/circulatingFluidizedBed "$case"
 
 sed -i 's/^writePrecision .*/writePrecision  17;/' "$case/system/controlDict"
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Checks of tests/regression/continueKuipersJet.sh: tutorials/kuipersJet
+"""Checks of tests/regression/continueKuipersJet.sh: tutorials/validation/kuipersJet
 run to 0.01 s (20 steps of 5e-4 s), then continued to 0.02 s (./Allrun 0.02
 -continue), from the solver's log of both pieces (log.mppicPimpleFoam):
   - two pieces ("Starting time loop" twice), 40 steps, the second piece's

@@ -1,7 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # continueKuipersJet <runDir>
-# tutorials/kuipersJet run to 0.01 s (20 steps), then continued to 0.02 s
+# tutorials/validation/kuipersJet run to 0.01 s (20 steps), then continued to 0.02 s
 # (./Allrun 0.02 -continue: from the written 0.01 s). Uninterrupted, no cell
 # of this bed goes above 5 parcels, 0.600, in these steps. Continued, the
 # coloring function must know where each parcel was at the end of the step
@@ -17,7 +17,7 @@
 runDir="${1:?usage: continueKuipersJet.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
-copyTutorial kuipersJet "$runDir/case"
+copyTutorial validation/kuipersJet "$runDir/case"
 runAllrun "$runDir/case" 0.01 || exit 1
 runAllrun "$runDir/case" 0.02 -continue || exit 1
 

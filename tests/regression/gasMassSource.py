@@ -33,7 +33,7 @@ Usage:
 import re
 import sys
 
-from checks import report, status
+from checks import report, run_command, status
 
 
 def internal_field(time_dir, name, vector=False):
@@ -97,15 +97,9 @@ def check_two_ranks(serial_time, ranks2_time):
 
 
 def main(argv):
-    if argv[0] == "channel":
-        check_channel(argv[1], float(argv[2]))
-    elif argv[0] == "continuity":
-        check_continuity(argv[1], argv[2])
-    elif argv[0] == "ranks":
-        check_two_ranks(argv[1], argv[2])
-    else:
-        sys.exit("unknown command %s" % argv[0])
-    return status()
+    return run_command(argv, {
+        "channel": lambda case, u: check_channel(case, float(u)),
+        "continuity": check_continuity, "ranks": check_two_ranks})
 
 
 if __name__ == "__main__":

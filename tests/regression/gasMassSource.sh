@@ -18,7 +18,7 @@ mkdir -p "$runDir"
 makeChannel()   # dir us
 {
     local dir="$1" us="$2"
-    copyTutorial settlingColumn "$dir"
+    copyTutorial verification/settlingColumn "$dir"
     rm -rf "$dir/0.orig" "$dir/column.geo" "$dir/system/changeDictionaryDict"
     mkdir -p "$dir/0"
     local header='FoamFile { version 2.0; format ascii; class'

@@ -12,7 +12,7 @@ runDir="${1:?usage: gidaspowEqualsErgunWenYu.sh <runDir>}"
 
 for drag in ErgunWenYuDrag GidaspowDrag
 do
-    copyTutorial settlingColumn "$runDir/$drag"
+    copyTutorial verification/settlingColumn "$runDir/$drag"
     setEntry "$runDir/$drag" system/controlDict endTime 0.005
     setEntry "$runDir/$drag" system/controlDict writeInterval 0.005
     setEntry "$runDir/$drag" constant/kinematicCloudProperties \

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Checks of tests/regression/kuipersJet.sh: tutorials/kuipersJet as the case
+"""Checks of tests/regression/kuipersJet.sh: tutorials/validation/kuipersJet as the case
 runs it (coloringFunction, GidaspowDrag, 38 000 parcels, dt 5e-4 s) for
 0.2 s, read with the tutorial's kuipersJetResults.summary(case, 0.1),
 kuipersJetSlabs and kuipersJetGasBudget (the case's copies):

@@ -1,7 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # kuipersJet <runDir>
-# tutorials/kuipersJet as the case runs it (mppicPimpleFoam, coloringFunction
+# tutorials/validation/kuipersJet as the case runs it (mppicPimpleFoam, coloringFunction
 # and GidaspowDrag on their defaults, 38 000 parcels, dt 5e-4 s) for 0.2 s
 # (about 2 minutes).
 # checks: kuipersJet.py (parcels, mass and the largest cell solids fraction
@@ -26,7 +26,7 @@
 runDir="${1:?usage: kuipersJet.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
-copyTutorial kuipersJet "$runDir/case"
+copyTutorial validation/kuipersJet "$runDir/case"
 runAllrun "$runDir/case" 0.2 || exit 1
 
 cd "$runDir/case" || exit 1

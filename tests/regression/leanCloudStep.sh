@@ -4,7 +4,7 @@
 # The lean cloud step of mppicPimpleFoam (LeanMPPICCloud: one plain loop for
 # the corrections, a correction pass over the parcels with a correction only,
 # only the averages the models read) against OpenFOAM's MPPICCloud::motion
-# (cloudStep MPPICCloud), on tutorials/kuipersJet for 0.05 s (100 steps),
+# (cloudStep MPPICCloud), on tutorials/validation/kuipersJet for 0.05 s (100 steps),
 # with the case's coloringFunction, and for 3 steps with stock's explicit
 # packing model (which reads the density and squared-velocity averages too).
 # The two steps are the same algorithm: the stock pass tracks the parcels
@@ -32,7 +32,7 @@ do
     endTime=${run#*:}
     lean="$runDir/$packing-lean"
     stock="$runDir/$packing-MPPICCloud"
-    copyTutorial kuipersJet "$lean"
+    copyTutorial validation/kuipersJet "$lean"
     # (sed: foamDictionary would write the included parcel weight rounded)
     sed -i "s/^\( *packingModel \+\)[A-Za-z]\+;/\1$packing;/" \
         "$lean/constant/kinematicCloudProperties"

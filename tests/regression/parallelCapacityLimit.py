@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks of tests/regression/parallelCapacityLimit.sh beside its
 sameState comparisons of the gas: the capacity limit makes serial's
-decisions on any decomposition. tutorials/circulatingFluidizedBed with
+decisions on any decomposition. tutorials/validation/circulatingFluidizedBed with
 mfixSnider and capacityLimit refuse, continued from 0.005 s to 0.01 s
 serially (serial/) and on 2 ranks (parallel/, reconstructed); at 0.01 s:
   - the same parcels, matched by (origProcId, origId), more than 10 000;

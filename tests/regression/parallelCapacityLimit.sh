@@ -3,7 +3,7 @@
 # parallelCapacityLimit <runDir>
 # processes: 2 (MPI ranks at most; tests/Alltest runs it alone)
 # The capacity limit makes serial's decisions on any decomposition
-# (ParcelEntries.H): tutorials/circulatingFluidizedBed with -packing
+# (ParcelEntries.H): tutorials/validation/circulatingFluidizedBed with -packing
 # mfixSnider (diffusion averaging), capacityLimit refuse instead of the
 # case's push (push-through's chains stay on their processor), the gas solved to 1e-13, run serially
 # from the seeded start (riser bed and standpipe packed) to 0.01 s; from its
@@ -20,7 +20,7 @@ runDir="${1:?usage: parallelCapacityLimit.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 start="$runDir/start"
-copyTutorial circulatingFluidizedBed "$start"
+copyTutorial validation/circulatingFluidizedBed "$start"
 sed -i '/mfixSniderCoeffs/,/}/s/^\( *capacityLimit \+\)push;/\1refuse;/' \
     "$start/constant/kinematicCloudProperties"
 [ "$(grep -c 'capacityLimit *refuse;' "$start/constant/kinematicCloudProperties")" = 1 ] \

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Checks of tests/regression/parallelKuipersJet.sh: tutorials/kuipersJet
+"""Checks of tests/regression/parallelKuipersJet.sh: tutorials/validation/kuipersJet
 for 0.05 s (100 steps) on 3 processes (simple (1 3 1)), from the solver's
 log (log.mppicPimpleFoam):
   - nProcs 3, and 100 steps logged;

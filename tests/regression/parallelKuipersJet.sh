@@ -2,7 +2,7 @@
 #------------------------------------------------------------------------------
 # parallelKuipersJet <runDir>
 # processes: 3 (MPI ranks at most; tests/Alltest runs it alone)
-# tutorials/kuipersJet for 0.05 s (100 steps) decomposed into 3 with simple
+# tutorials/validation/kuipersJet for 0.05 s (100 steps) decomposed into 3 with simple
 # (1 3 1): two processor boundaries across the column, at 1/3 and 2/3 of its
 # height, the lower one through the packed bed; 3 processes on the 2 cores.
 # Stock MPPICFoam is reported to hang in KinematicParcel::move with a 3-way
@@ -15,7 +15,7 @@ runDir="${1:?usage: parallelKuipersJet.sh <runDir>}"
 export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1
 
 case="$runDir/case"
-copyTutorial kuipersJet "$case"
+copyTutorial validation/kuipersJet "$case"
 setEntry "$case" system/decomposeParDict numberOfSubdomains 3
 setEntry "$case" system/decomposeParDict coeffs/n "(1 3 1)"
 timeout 600 "$case/Allrun" 0.05 -parallel

@@ -115,15 +115,9 @@ def check_volume_arrangement(case, label, edges, counts, n):
 
 
 def main(argv):
-    if argv[0] == "seeding":
-        check_seeding(argv[1], argv[2])
-    elif argv[0] == "weight":
-        check_statistical_weight(argv[1])
-    elif argv[0] == "volume":
-        check_volume_arrangement(*argv[1:6])
-    else:
-        sys.exit("unknown command %s" % argv[0])
-    return checks.status()
+    return checks.run_command(argv, {
+        "seeding": check_seeding, "weight": check_statistical_weight,
+        "volume": lambda *a: check_volume_arrangement(*a[:5])})
 
 
 if __name__ == "__main__":

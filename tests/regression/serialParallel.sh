@@ -11,7 +11,7 @@ runDir="${1:?usage: serialParallel.sh <runDir>}"
 
 for mode in serial parallel
 do
-    copyTutorial settlingColumn "$runDir/$mode"
+    copyTutorial verification/settlingColumn "$runDir/$mode"
     setEntry "$runDir/$mode" system/controlDict endTime 0.2
 done
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Checks of tests/regression/settledBed.sh: tutorials/settlingColumn with
+"""Checks of tests/regression/settledBed.sh: tutorials/verification/settlingColumn with
 coloringFunction (close pack 0.6, e1 0.85, e2 0.9; 1 s): 100 um glass beads
 (rho_p = 2500 kg/m3) settle in air (rho_g = 1.2 kg/m3, mu = 1.8e-5 Pa s)
 onto the closed bottom and are at rest from about 0.8 s. A bed at rest on

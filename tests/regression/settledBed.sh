@@ -1,7 +1,7 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # settledBed <runDir>
-# tutorials/settlingColumn with coloringFunction (close pack 0.6, e1 0.85,
+# tutorials/verification/settlingColumn with coloringFunction (close pack 0.6, e1 0.85,
 # e2 0.9; 1 s, about 70 s): 100 um glass beads (2500 kg/m3) settle in air
 # (1.2 kg/m3, 1.8e-5 Pa s) onto the closed bottom and are at rest from
 # about 0.8 s. A bed at rest on the bottom hands the gas no weight: the
@@ -14,7 +14,7 @@ runDir="${1:?usage: settledBed.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 case="$runDir/case"
-copyTutorial settlingColumn "$case"
+copyTutorial verification/settlingColumn "$case"
 setEntry "$case" constant/kinematicCloudProperties \
     subModels/packingModel coloringFunction
 setEntry "$case" constant/kinematicCloudProperties \

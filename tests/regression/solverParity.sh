@@ -14,7 +14,7 @@ runDir="${1:?usage: solverParity.sh <runDir>}"
 
 for solver in mppicPimpleFoam MPPICFoam
 do
-    copyTutorial settlingColumn "$runDir/$solver"
+    copyTutorial verification/settlingColumn "$runDir/$solver"
     setEntry "$runDir/$solver" system/controlDict application $solver
     setEntry "$runDir/$solver" system/controlDict endTime 0.2
     runAllrun "$runDir/$solver" || exit 1

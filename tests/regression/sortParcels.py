@@ -73,13 +73,9 @@ def check_sorted_equals_unsorted(time0, time1):
 
 
 def main(argv):
-    if argv[0] == "shuffle":
-        shuffle_positions(argv[1])
-    elif argv[0] == "compare":
-        check_sorted_equals_unsorted(argv[1], argv[2])
-    else:
-        sys.exit("unknown command %s" % argv[0])
-    return checks.status()
+    return checks.run_command(argv, {
+        "shuffle": shuffle_positions,
+        "compare": check_sorted_equals_unsorted})
 
 
 if __name__ == "__main__":

@@ -3,7 +3,7 @@
 # sortParcels <runDir>
 # sortParcelsEvery (LeanMPPICCloud) puts the parcel list in cell order and
 # copies each parcel to a new allocation, and changes nothing else. The
-# Kuipers jet's seeded parcels (tutorials/kuipersJet) are injected in a
+# Kuipers jet's seeded parcels (tutorials/validation/kuipersJet) are injected in a
 # shuffled order (the positions file permuted with a fixed seed) and run for
 # 3 steps (5e-4 s each) with sortParcelsEvery 0 and 1 (a sort at the start of
 # every step). The bed is seeded full (5 parcels in every cell), so no
@@ -17,7 +17,7 @@ runDir="${1:?usage: sortParcels.sh <runDir>}"
 . "$MPPIC_PROJECT_DIR/tests/lib/caseFunctions"
 
 base="$runDir/base"
-copyTutorial kuipersJet "$base"
+copyTutorial validation/kuipersJet "$base"
 sed -i "s/^writePrecision .*/writePrecision  17;/" "$base/system/controlDict"
 runAllrun "$base" 0.0005 || exit 1
 rm -rf "$base"/0.0005 "$base"/postProcessing "$base"/log.mppicPimpleFoam

@@ -145,17 +145,9 @@ def check_solver_read_split():
 
 
 def main(argv):
-    if argv[0] == "badNParticle":
-        bad_nparticle(argv[1])
-    elif argv[0] == "oneShort":
-        one_short(argv[1])
-    elif argv[0] == "split":
-        check_split()
-    elif argv[0] == "solver":
-        check_solver_read_split()
-    else:
-        sys.exit("unknown command %s" % argv[0])
-    return checks.status()
+    return checks.run_command(argv, {
+        "badNParticle": bad_nparticle, "oneShort": one_short,
+        "split": check_split, "solver": check_solver_read_split})
 
 
 if __name__ == "__main__":

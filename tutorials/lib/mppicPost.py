@@ -59,6 +59,9 @@ import numpy as np
 # packingMonitor.dat columns (src/mppicModels/functionObjects/packingMonitor)
 MONITOR_MASS, MONITOR_PACKING_Y, MONITOR_GAS_PACKING_Y = 2, 9, 15
 
+# Gravity [m/s2], as the tutorials' constant/g
+G = 9.81
+
 
 # * * * * * * * * * * * * * * * * Readers  * * * * * * * * * * * * * * * * * #
 

@@ -104,6 +104,33 @@ def coeffs_text(path, block):
 PIMPLE_SWITCHES = (("faceInterpolatedDrag", False), ("balanceImplicitDrag", False))
 
 
+def add_record_argument(parser):
+    """A results script's option --record FILE: write the validation
+    matrix's record of the run (write) to FILE."""
+    parser.add_argument("--record", metavar="FILE",
+                        help="write the validation matrix's record of the "
+                        "run (tutorials/lib/validationRecord.py) to FILE")
+
+
+def parcel_settings(case, drag_detail, gas=""):
+    """One line of what a single-parcel or tracer case ran with: the
+    packing model, the drag (its name and drag_detail, the keywords of its
+    coefficients to show), gas (a note on the gas), the averaging, the gas
+    velocity interpolation, deltaT and maxCo."""
+    path = os.path.join(case, "constant", "kinematicCloudProperties")
+    forces = re.search(r"particleForces\s*\{\s*(\w+)", post.read_text(path))
+    detail = ", ".join("%s %s" % (key, post.dict_entry(path, key))
+                       for key in drag_detail)
+    return "; ".join(part for part in (
+        "packingModel %s" % post.dict_entry(path, "packingModel"),
+        "drag %s (%s)" % (forces.group(1) if forces else "none", detail),
+        gas,
+        "averagingMethod %s" % post.dict_entry(path, "averagingMethod"),
+        "gas velocity interpolation %s" % post.dict_entry(path, "U.air"),
+        "deltaT %s s, maxCo %s" % (post.control_entry(case, "deltaT"),
+                                   post.dict_entry(path, "maxCo"))) if part)
+
+
 def case_settings(case, cloud_file="kinematicCloudProperties"):
     """One line of what a cloud case ran with, read from its files."""
     cloud = os.path.join(case, "constant", cloud_file)
@@ -142,14 +169,18 @@ def case_settings(case, cloud_file="kinematicCloudProperties"):
     return "; ".join(parts)
 
 
-def _git(*args):
-    here = os.path.dirname(os.path.abspath(__file__))
+def git(where, *args):
+    """git's output of args run in the folder where ("" on failure)."""
     try:
-        return subprocess.run(["git", "-C", here] + list(args),
+        return subprocess.run(["git", "-C", where] + list(args),
                               capture_output=True, text=True,
                               check=True).stdout.strip()
     except (OSError, subprocess.CalledProcessError):
         return ""
+
+
+def _git(*args):
+    return git(os.path.dirname(os.path.abspath(__file__)), *args)
 
 
 def write(path, case, rows, plots=(), settings="", window=""):

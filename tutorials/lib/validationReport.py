@@ -23,6 +23,8 @@ import os
 import subprocess
 import sys
 
+from validationRecord import git
+
 
 def read_rows(path, n_fields):
     """The lines of a |-separated list (comments and blank lines aside),
@@ -54,15 +56,6 @@ def read_trade_offs(project):
     tutorials/validationTradeOffs; none without the file."""
     path = os.path.join(project, "tutorials", "validationTradeOffs")
     return read_rows(path, 5) if os.path.exists(path) else []
-
-
-def git(project, *args):
-    try:
-        return subprocess.run(["git", "-C", project] + list(args),
-                              capture_output=True, text=True,
-                              check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return ""
 
 
 def without_comments(text):

@@ -286,13 +286,13 @@ void testLimiterAndMean(cloudType& cloud, const fvMesh& mesh)
     dictionary rules(coeffs);
     checkClose
     (
-        "stress at the cap, tau(0.9)", sniderStressRules(rules).tau(0.9),
+        "stress at the cap, tau(0.9)", sniderStressRules(rules, 0.6).tau(0.9),
         100*pow3(0.69)/(1e-7*0.31), 1e-12
     );
     checkClose
     (
         "stress below close pack, tau(0.3)",
-        sniderStressRules(rules).tau(0.3), 9, 1e-12
+        sniderStressRules(rules, 0.6).tau(0.3), 9, 1e-12
     );
 }
 

@@ -22,9 +22,9 @@ void testRelease()
 {
     dictionary coeffs;
     coeffs.add("closePackFraction", 0.6);
-    const sniderStressRules never(coeffs);
+    const sniderStressRules never(coeffs, 0.6);
     coeffs.add("releaseAbove", 0.65);
-    const sniderStressRules release(coeffs);
+    const sniderStressRules release(coeffs, 0.6);
 
     const vector grad(3, -4, 0);
     const scalar l = 3.7*0.005/(3*Foam::sqrt(2.0)*0.68);

@@ -66,6 +66,7 @@ Description
 #include "IOstreams.H"
 #include "coloringFunctionRules.H"
 #include "sniderStressRules.H"
+#include "closePack.H"
 #include "unitTest.H"
 #include "packingRulesChecks.H"
 
@@ -98,7 +99,7 @@ bool rejects(const dictionary& dict, const word& keyword)
 {
     return unitTest::raisesError
     (
-        [&]() { Rules rules(dict); },
+        [&]() { Rules rules(dict, PackingModels::readClosePackFraction(dict)); },
         {keyword}
     );
 }
@@ -141,10 +142,13 @@ struct colouringCase
 void testColoringFunction()
 {
     const vector g(0, -9.81, 0);
-    const coloringFunctionRules rules(colouringCoeffs());
-    const coloringFunctionRules no1a(colouringCoeffs(false, true));
-    const coloringFunctionRules no1b(colouringCoeffs(true, false));
-    const coloringFunctionRules normal(colouringCoeffs(true, true, "normal"));
+    const coloringFunctionRules rules(colouringCoeffs(), 0.6);
+    const coloringFunctionRules no1a(colouringCoeffs(false, true), 0.6);
+    const coloringFunctionRules no1b(colouringCoeffs(true, false), 0.6);
+    const coloringFunctionRules normal
+    (
+        colouringCoeffs(true, true, "normal"), 0.6
+    );
 
     checkClose("chi(0.59)", rules.colour(0.59), 0, 0, 1);
     checkClose("chi(0.6)", rules.colour(0.6), 0.6);

@@ -38,8 +38,14 @@ using namespace Foam;
 void testComponentReflection()
 {
     const vector g(0, -9.81, 0);
-    const coloringFunctionRules rules(colouringCoeffs(true, true, "component"));
-    const coloringFunctionRules no1a(colouringCoeffs(false, true, "component"));
+    const coloringFunctionRules rules
+    (
+        colouringCoeffs(true, true, "component"), 0.6
+    );
+    const coloringFunctionRules no1a
+    (
+        colouringCoeffs(false, true, "component"), 0.6
+    );
     const vector dx(1, 0, 0);
 
     checkVector

@@ -16,7 +16,7 @@ using namespace Foam::unitTest;
 
 void testSnider()
 {
-    const sniderStressRules rules(sniderCoeffs());
+    const sniderStressRules rules(sniderCoeffs(), 0.6);
 
     checkClose("tau(0.3) [Pa]", rules.tau(0.3), 9, 1e-12);
     checkClose("tau(0.59) [Pa]", rules.tau(0.59), 2053.79, 1e-12);
@@ -80,7 +80,7 @@ void testSnider()
     checkVector
     (
         "slipVelocityFactor 0.5",
-        sniderStressRules(halfSlip).correctedVelocity
+        sniderStressRules(halfSlip, 0.6).correctedVelocity
         (
             vector(0, -1, 0), vector(0, -0.2, 0), vector(0, 2, 0), gradDown
         ),

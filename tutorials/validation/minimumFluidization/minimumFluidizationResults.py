@@ -52,7 +52,7 @@ import validationRecord as record  # noqa: E402 (tutorials/lib)
 import minimumFluidizationRecord  # noqa: E402 (beside this script)
 
 MEASURED_UMF = 0.182
-G = 9.81
+G = post.G
 TABLE_HEAD = ("| run | Umf, fits [m/s] | vs 0.182 | bed unlocks at [m/s] "
               "| plateau dP* | fixed bed vs Ergun | Ergun Umf [m/s] |\n"
               "|---|---|---|---|---|---|---|")
@@ -301,9 +301,7 @@ def main():
     parser.add_argument("--out", default="minimumFluidization_overlay.png")
     parser.add_argument("--title", default="minimum fluidization")
     parser.add_argument("--split", nargs=2, type=float, metavar=("T0", "T1"))
-    parser.add_argument("--record", metavar="FILE",
-                        help="write the validation matrix's record of the "
-                        "run (tutorials/lib/validationRecord.py)")
+    record.add_record_argument(parser)
     args = parser.parse_args()
     if args.split:
         split = weight_split(args.case, *args.split)

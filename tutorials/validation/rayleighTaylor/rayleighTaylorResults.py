@@ -46,7 +46,7 @@ import validationRecord as record  # noqa: E402 (tutorials/lib)
 
 Y0 = 0.3
 EPS0 = 0.2
-G = 9.81
+G = post.G
 HEIGHT = 0.6
 TABLE_HEAD = ("| run | particle density | A | fit range [s] | alpha "
               "| in [0.05, 0.07] |\n|---|---|---|---|---|---|")
@@ -162,9 +162,7 @@ def record_rows(res):
 def main():
     parser = post.results_parser("run", __doc__.split("\n")[0])
     parser.add_argument("--plot", action="store_true")
-    parser.add_argument("--record", metavar="FILE",
-                        help="write the validation matrix's record of the "
-                        "run (tutorials/lib/validationRecord.py)")
+    record.add_record_argument(parser)
     args = post.parse_results_args(parser, TABLE_HEAD)
     res = summary(args.case)
     if args.row:

@@ -306,9 +306,7 @@ def main():
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--rows", action="store_true")
     parser.add_argument("--largest", nargs="+", metavar="DIR:LABEL")
-    parser.add_argument("--record", metavar="FILE",
-                        help="write the validation matrix's record of the run "
-                        "(case uniformBed-<parcels per packed cell>) to FILE")
+    record.add_record_argument(parser)
     args = parser.parse_args()
     if args.record and args.label == parser.get_default("label"):
         args.label = "perCell%d" % run_settings(args.case)[2]

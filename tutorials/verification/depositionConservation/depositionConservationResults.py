@@ -86,8 +86,7 @@ def main():
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--limit", type=float, default=1e-14)
     parser.add_argument("--plot", action="store_true")
-    parser.add_argument("--record", metavar="FILE",
-                        help="write the validation matrix's record (JSON)")
+    record.add_record_argument(parser)
     args = parser.parse_args()
 
     volumes, _ = field_values(os.path.join(args.case, "0", "V"))

@@ -153,9 +153,7 @@ def main():
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--width", type=float, default=0.05)
     parser.add_argument("--depth", type=float, default=0.005)
-    parser.add_argument("--record", metavar="FILE",
-                        help="write the validation matrix's record of the "
-                        "run (tutorials/lib/validationRecord.py)")
+    record.add_record_argument(parser)
     args = post.parse_results_args(parser, TABLE_HEAD)
 
     res = summary(args.case, args.width, args.depth)

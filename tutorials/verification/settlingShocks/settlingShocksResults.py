@@ -56,7 +56,7 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
 import mppicPost as post  # noqa: E402 (tutorials/lib)
 import validationRecord as record  # noqa: E402 (tutorials/lib)
 
-G = 9.81
+G = post.G
 RHO_P, RHO_G, D_P, MU = 2000.0, 1000.0, 1e-3, 1e-3
 CLOSE_PACK = 0.6
 
@@ -223,9 +223,7 @@ def main():
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--hindered-velocity", type=float, metavar="ES0")
-    parser.add_argument("--record", metavar="FILE",
-                        help="write the validation matrix's record of the "
-                        "run (tutorials/lib/validationRecord.py)")
+    record.add_record_argument(parser)
     args = post.parse_results_args(parser, TABLE_HEAD)
     if args.hindered_velocity is not None:
         es0 = args.hindered_velocity

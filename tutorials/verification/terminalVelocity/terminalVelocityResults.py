@@ -74,17 +74,7 @@ def parcel(case, time):
 def settings(case):
     """What the run used, from its constant/kinematicCloudProperties and
     system/controlDict."""
-    path = os.path.join(case, "constant", "kinematicCloudProperties")
-    forces = re.search(r"particleForces\s*\{\s*(\w+)", post.read_text(path))
-    return ("packingModel %s; drag %s (Cd %s, feedback %s); averagingMethod "
-            "%s; gas velocity interpolation %s; deltaT %s s, maxCo %s" % (
-                post.dict_entry(path, "packingModel"),
-                forces.group(1) if forces else "none",
-                post.dict_entry(path, "Cd"), post.dict_entry(path, "feedback"),
-                post.dict_entry(path, "averagingMethod"),
-                post.dict_entry(path, "U.air"),
-                post.control_entry(case, "deltaT"),
-                post.dict_entry(path, "maxCo")))
+    return record.parcel_settings(case, ("Cd", "feedback"))
 
 
 def write_record(args, times, sim, ref, vt, y_err):
@@ -110,8 +100,7 @@ def main():
     parser.add_argument("--case", default=".")
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--plot", action="store_true")
-    parser.add_argument("--record", metavar="FILE",
-                        help="write the validation matrix's record (JSON)")
+    record.add_record_argument(parser)
     args = parser.parse_args()
 
     h0 = float(re.search(r"\(\s*\(\s*\S+\s+(\S+)\s+\S+\s*\)",

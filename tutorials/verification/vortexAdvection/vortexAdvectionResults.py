@@ -108,8 +108,7 @@ def main():
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--limit", type=float, default=5e-3)
     parser.add_argument("--plot", action="store_true")
-    parser.add_argument("--record", metavar="FILE",
-                        help="write the validation matrix's record (JSON)")
+    record.add_record_argument(parser)
     args = parser.parse_args()
 
     start = read_points(post.read_text(os.path.join(
@@ -154,20 +153,10 @@ def main():
 
 def settings(case):
     """What the run used, from its constant/ and system/ dictionaries."""
-    path = os.path.join(case, "constant", "kinematicCloudProperties")
-    forces = re.search(r"particleForces\s*\{\s*(\w+)", post.read_text(path))
     gas = os.path.join(case, "constant", "prescribedGasFlowProperties")
-    return ("packingModel %s; drag %s (C %s 1/s); gas prescribed (%s, period "
-            "%s s), not solved; averagingMethod %s; gas velocity "
-            "interpolation %s; deltaT %s s, maxCo %s" % (
-                post.dict_entry(path, "packingModel"),
-                forces.group(1) if forces else "none",
-                post.dict_entry(path, "C"), post.dict_entry(gas, "type"),
-                post.dict_entry(gas, "period"),
-                post.dict_entry(path, "averagingMethod"),
-                post.dict_entry(path, "U.air"),
-                post.control_entry(case, "deltaT"),
-                post.dict_entry(path, "maxCo")))
+    return record.parcel_settings(
+        case, ("C",), "gas prescribed (%s, period %s s), not solved"
+        % (post.dict_entry(gas, "type"), post.dict_entry(gas, "period")))
 
 
 def write_record(args, start, rows, fewest):

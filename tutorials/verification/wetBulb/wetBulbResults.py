@@ -198,8 +198,7 @@ def main(argv):
     parser.add_argument("--check", type=float, default=None)
     parser.add_argument("--plot", default=None)
     parser.add_argument("--table", default="wetBulbTable.md")
-    parser.add_argument("--record", metavar="FILE",
-                        help="write the validation matrix's record (JSON)")
+    record.add_record_argument(parser)
     args = parser.parse_args(argv)
 
     rows = sorted((summary(c) for c in args.runs), key=lambda r: r["humidity"])

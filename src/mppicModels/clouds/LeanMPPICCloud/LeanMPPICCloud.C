@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "LeanMPPICCloud.H"
-#include "MfixPackingModel.H"
+#include "DensePackingModel.H"
 #include "DynamicList.H"
 #include <algorithm>
 #include <type_traits>
@@ -108,10 +108,10 @@ void Foam::LeanMPPICCloud<CloudType>::sortParcels()
 
 
 template<class CloudType>
-typename Foam::LeanMPPICCloud<CloudType>::mfixPackingModelType*
+typename Foam::LeanMPPICCloud<CloudType>::densePackingModelType*
 Foam::LeanMPPICCloud<CloudType>::ourPackingModel()
 {
-    return dynamic_cast<mfixPackingModelType*>(&this->packingModel());
+    return dynamic_cast<densePackingModelType*>(&this->packingModel());
 }
 
 

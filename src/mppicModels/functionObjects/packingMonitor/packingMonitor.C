@@ -5,7 +5,8 @@
 
 #include "packingMonitor.H"
 #include "solidsFractionDeposition.H"
-#include "MfixPackingModel.H"
+#include "DensePackingModel.H"
+#include "closePack.H"
 #include "wallPolyPatch.H"
 #include "volFields.H"
 #include "extrapolatedCalculatedFvPatchFields.H"
@@ -41,38 +42,23 @@ Foam::scalar Foam::functionObjects::packingMonitor::readClosePackFraction
             );
     }
 
-    // Our packing models say it; the stock ones keep it in their
-    // particle stress model, which they do not expose
-    const scalar fromModel =
-        cloudAs<basicKinematicMPPICCloud>()
-      ? closePackFractionOf(*cloudAs<basicKinematicMPPICCloud>())
-      : closePackFractionOf(*cloudAs<basicReactingMPPICCloud>());
-
-    if (fromModel > 0)
-    {
-        return fromModel;
-    }
-
+    // The packing family reads it from the model's coefficients: ours
+    // keep closePackFraction, the stock ones their particle stress
+    // model's alphaPacked
     const dictionary& subModels = cloudProperties().subDict("subModels");
-    const word model(subModels.get<word>("packingModel"));
-    const dictionary& coeffs = subModels.subOrEmptyDict(model + "Coeffs");
+    const scalar fromModel = PackingModels::closePackFractionOf(subModels);
 
-    if (!coeffs.isDict("particleStressModel"))
+    if (fromModel <= 0)
     {
         FatalIOErrorInFunction(dict)
             << "Dictionary " << dict.name() << ": keyword closePackFraction"
-            << " is missing and packing model " << model << " of cloud "
+            << " is missing and packing model "
+            << subModels.get<word>("packingModel") << " of cloud "
             << cloudName_ << " does not give one; allowed range (0, 1)"
             << exit(FatalIOError);
     }
 
-    return
-        mppicCoefficients::read
-        (
-            coeffs.subDict("particleStressModel"),
-            "alphaPacked",
-            mppicCoefficients::bounds::open(0, 1)
-        );
+    return fromModel;
 }
 
 

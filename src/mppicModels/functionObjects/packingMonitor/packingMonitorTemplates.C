@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "packingMonitor.H"
-#include "cellRoom.H"
+#include "closePack.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -21,7 +21,7 @@ const CloudType* Foam::functionObjects::packingMonitor::cloudAs() const
 
 
 template<class CloudType>
-const Foam::PackingModels::MfixPackingModel
+const Foam::PackingModels::DensePackingModel
 <
     typename CloudType::MPPICCloudType
 >*
@@ -29,22 +29,11 @@ Foam::functionObjects::packingMonitor::ourPackingModel(const CloudType& cloud)
 {
     return dynamic_cast
     <
-        const PackingModels::MfixPackingModel
+        const PackingModels::DensePackingModel
         <
             typename CloudType::MPPICCloudType
         >*
     >(&cloud.packingModel());
-}
-
-
-template<class CloudType>
-Foam::scalar Foam::functionObjects::packingMonitor::closePackFractionOf
-(
-    const CloudType& cloud
-)
-{
-    const auto* ours = ourPackingModel(cloud);
-    return ours ? ours->closePackFraction() : 0;
 }
 
 
@@ -134,7 +123,10 @@ Foam::functionObjects::packingMonitor::evaluate(const CloudType& cloud) const
     forAll(alphaCell, celli)
     {
         s.maxAlphaCell = max(s.maxAlphaCell, alphaCell[celli]);
-        if (alphaCell[celli] > (1 + cellRoom::roundOff)*closePackFraction_)
+        if
+        (
+            PackingModels::aboveClosePack(alphaCell[celli], closePackFraction_)
+        )
         {
             ++s.nCellsAboveClosePack;
         }

@@ -25,8 +25,7 @@ template<class CloudType>
 const Foam::wordList
 Foam::PackingModels::ColoringFunction<CloudType>::keywords
 ({
-    "closePackFraction", "e1", "e2", "case1a", "case1b",
-    "reflection", "impulse", "holdSupportedPacks"
+    "e1", "e2", "case1a", "case1b", "reflection", "impulse"
 });
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -38,8 +37,8 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     CloudType& owner
 )
 :
-    MfixPackingModel<CloudType>(dict, owner, typeName, keywords),
-    rules_(this->coeffs()),
+    DensePackingModel<CloudType>(dict, owner, typeName, keywords),
+    rules_(this->coeffs(), this->closePackFraction()),
     impulse_
     (
         impulseTypeNames.lookupOrDefault
@@ -48,14 +47,6 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
             this->coeffs(),
             impulseType::neighbour
         )
-    ),
-    capacityLimit_(CapacityLimit<CloudType>::mode(this->coeffs()) != "none"),
-    limit_
-    (
-        owner.mesh(),
-        this->coeffs(),
-        capacityLimit_
-     && this->coeffs().lookupOrDefault("holdSupportedPacks", true)
     )
 {}
 
@@ -66,11 +57,9 @@ Foam::PackingModels::ColoringFunction<CloudType>::ColoringFunction
     const ColoringFunction<CloudType>& cm
 )
 :
-    MfixPackingModel<CloudType>(cm),
+    DensePackingModel<CloudType>(cm),
     rules_(cm.rules_),
-    impulse_(cm.impulse_),
-    capacityLimit_(cm.capacityLimit_),
-    limit_(cm.limit_)
+    impulse_(cm.impulse_)
 {}
 
 
@@ -107,19 +96,19 @@ Foam::PackingModels::ColoringFunction<CloudType>::packFor
     // A parcel that moved into its cell in this step and may not stay:
     // the pack is its own cell, along the way it came in
     const typename ParcelEntries<CloudType>::entry* entered =
-        limit_.entries().find(p);
+        this->limit().entries().find(p);
 
     if (entered)
     {
         const scalar cellValue = this->cellValue(p.cell());
 
         const bool blocked =
-            capacityLimit_ ? !entered->admitted : cellValue > 0;
+            this->capacityLimit() ? !entered->admitted : cellValue > 0;
 
         if (blocked)
         {
             pack.impulse =
-                -max(cellValue, rules_.closePackFraction())
+                -max(cellValue, this->closePackFraction())
                 *entered->direction;
             pack.uMean = this->cellUMean(p.cell());
             pack.cell = this->globalCell(p);
@@ -129,7 +118,7 @@ Foam::PackingModels::ColoringFunction<CloudType>::packFor
     }
 
     // The cell ahead: when close packed, the pack lies along the normal
-    const typename MfixPackingModel<CloudType>::neighbourState ahead =
+    const neighbourState ahead =
         this->neighbourAhead(p);
 
     pack.impulse = -ahead.value*ahead.normal;
@@ -143,12 +132,15 @@ template<class CloudType>
 Foam::tmp<Foam::scalarField>
 Foam::PackingModels::ColoringFunction<CloudType>::cellPackingValues() const
 {
-    if (!capacityLimit_ || impulse_ != impulseType::neighbour)
+    if (!this->capacityLimit() || impulse_ != impulseType::neighbour)
     {
-        return MfixPackingModel<CloudType>::cellPackingValues();
+        return DensePackingModel<CloudType>::cellPackingValues();
     }
 
-    tmp<scalarField> tvalues(new scalarField(limit_.entries().startFraction()));
+    tmp<scalarField> tvalues
+    (
+        new scalarField(this->limit().entries().startFraction())
+    );
     for (scalar& value : tvalues.ref())
     {
         value = rules_.colour(value);
@@ -177,62 +169,28 @@ void Foam::PackingModels::ColoringFunction<CloudType>::recordChange
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::PackingModels::ColoringFunction<CloudType>::beforeMotion()
-{
-    // Nothing recorded yet while parcels that have moved before (age > 0)
-    // are in the cloud: they were read from a written time. Record where
-    // they are, which is where the uninterrupted run's last step left them
-    // (the parcels injected since, of age 0, were not there then)
-    if (impulse_ == impulseType::neighbour)
-    {
-        limit_.beforeMotion(this->owner());
-    }
-}
-
-
-template<class CloudType>
 void Foam::PackingModels::ColoringFunction<CloudType>::cacheFields
 (
     const bool store
 )
 {
-    if (store && impulse_ == impulseType::neighbour)
+    if (debug && tracksEntries())
     {
-        limit_.setDebug(debug);
-        limit_.startStep
-        (
-            this->owner(),
-            rules_.closePackFraction(),
-            this->owner().db().time().deltaTValue()
-        );
-    }
-    else
-    {
-        if (debug && impulse_ == impulseType::neighbour)
+        if (store)
         {
-            limit_.entries().reportGrowth
+            this->limitRef().setDebug(debug);
+        }
+        else
+        {
+            this->limit().entries().reportGrowth
             (
                 this->owner(),
-                rules_.closePackFraction()
+                this->closePackFraction()
             );
-        }
-
-        // End of the packing step: the packs take their impulses back; a
-        // held pack whose fall the support stopped in this step hands the
-        // part down along gravity to it (CapacityLimit::settledVelocity)
-        if (this->conserveMomentum())
-        {
-            this->applyReactions(limit_);
-        }
-
-        // Where each parcel now is
-        if (impulse_ == impulseType::neighbour)
-        {
-            limit_.endStep(this->owner());
         }
     }
 
-    MfixPackingModel<CloudType>::cacheFields(store);
+    DensePackingModel<CloudType>::cacheFields(store);
 }
 
 
@@ -257,7 +215,7 @@ velocityCorrection
         )
       - p.U();
 
-    if (capacityLimit_ && impulse_ == impulseType::neighbour)
+    if (this->capacityLimit() && impulse_ == impulseType::neighbour)
     {
         // The correction move puts the parcel where it may be; OpenFOAM
         // then adds the move's velocity to the parcel's (MPPICParcel,
@@ -265,12 +223,11 @@ velocityCorrection
         // rules give, without a component into a cell that refused it: a
         // move back across a cell is a displacement, and kept as a
         // velocity it would fling the parcel out of the pack
-        // (keepAfterTrack: MfixPackingModel.H)
+        // (keepAfterTrack: DensePackingModel.H)
         vector kept;
         const vector move =
-            limit_.move
+            this->limit().move
             (
-                this->owner().mesh(),
                 p,
                 correction,
                 pack.uMean,

@@ -13,9 +13,8 @@ template<class CloudType>
 const Foam::wordList
 Foam::PackingModels::MfixSnider<CloudType>::keywords
 ({
-    "closePackFraction", "pSolid", "gamma", "eps", "e1",
-    "slipVelocityFactor", "releaseAbove", "collisionDamping",
-    "holdSupportedPacks"
+    "pSolid", "gamma", "eps", "e1", "slipVelocityFactor", "releaseAbove",
+    "collisionDamping"
 });
 
 
@@ -51,24 +50,16 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
     CloudType& owner
 )
 :
-    MfixPackingModel<CloudType>(dict, owner, typeName, keywords),
-    rules_(checkedCoeffs(this->coeffs())),
+    DensePackingModel<CloudType>(dict, owner, typeName, keywords),
+    rules_(checkedCoeffs(this->coeffs()), this->closePackFraction()),
     collisionDamping_
     (
         this->coeffs().template lookupOrDefault<bool>("collisionDamping", false)
     ),
-    capacityLimit_(CapacityLimit<CloudType>::mode(this->coeffs()) != "none"),
     stressGradient_(owner.mesh()),
     cellAlpha_(),
-    damping_(rules_.e1(), rules_.closePackFraction()),
-    previousMeanVelocity_(nullptr),
-    limit_
-    (
-        owner.mesh(),
-        this->coeffs(),
-        capacityLimit_
-     && this->coeffs().lookupOrDefault("holdSupportedPacks", true)
-    )
+    damping_(rules_.e1(), this->closePackFraction()),
+    previousMeanVelocity_(nullptr)
 {
     meanVelocity();
 }
@@ -80,15 +71,13 @@ Foam::PackingModels::MfixSnider<CloudType>::MfixSnider
     const MfixSnider<CloudType>& cm
 )
 :
-    MfixPackingModel<CloudType>(cm),
+    DensePackingModel<CloudType>(cm),
     rules_(cm.rules_),
     collisionDamping_(cm.collisionDamping_),
-    capacityLimit_(cm.capacityLimit_),
     stressGradient_(cm.owner().mesh()),
     cellAlpha_(),
-    damping_(rules_.e1(), rules_.closePackFraction()),
-    previousMeanVelocity_(nullptr),
-    limit_(cm.limit_)
+    damping_(rules_.e1(), this->closePackFraction()),
+    previousMeanVelocity_(nullptr)
 {}
 
 
@@ -197,51 +186,14 @@ Foam::label Foam::PackingModels::MfixSnider<CloudType>::packCell
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::PackingModels::MfixSnider<CloudType>::beforeMotion()
-{
-    // On a restart: record where the parcels read from the written time
-    // are, which is where the uninterrupted run's last step left them
-    if (capacityLimit_)
-    {
-        limit_.beforeMotion(this->owner());
-    }
-}
-
-
-template<class CloudType>
 void Foam::PackingModels::MfixSnider<CloudType>::cacheFields(const bool store)
 {
-    MfixPackingModel<CloudType>::cacheFields(store);
-
-    if (capacityLimit_)
-    {
-        if (store)
-        {
-            limit_.startStep
-            (
-                this->owner(),
-                rules_.closePackFraction(),
-                this->owner().db().time().deltaTValue()
-            );
-        }
-        else
-        {
-            limit_.endStep(this->owner());
-        }
-    }
+    // The base takes the step's entries and, at the end, gives the packs
+    // their reactions, before the mean of the final velocities is taken
+    DensePackingModel<CloudType>::cacheFields(store);
 
     if (!store)
     {
-        // The packs take the opposite of the impulses they gave, before
-        // the mean of the final velocities is taken; a held pack whose fall
-        // the support stopped in this step hands the part down along
-        // gravity to it (CapacityLimit::settledVelocity; kept by its
-        // parcels, the drag of that fall would raise a fixed bed's
-        // pressure drop)
-        if (this->conserveMomentum())
-        {
-            this->applyReactions(limit_);
-        }
         storeMeanVelocity();
         previousMeanVelocity_ = nullptr;
         stressGradient_.clear();

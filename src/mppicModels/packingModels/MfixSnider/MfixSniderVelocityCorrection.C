@@ -7,7 +7,7 @@ Description
     the optional damping and release, the capacity limit, the reactions
     and the boundary rule (see MfixSnider.H). The velocity the parcel
     keeps goes to keepAfterTrack, which writes it once in the step
-    (MfixPackingModel.H: at once, or with conserveMomentum at the end of
+    (DensePackingModel.H: at once, or with conserveMomentum at the end of
     the step with the packs' reactions).
 
 \*---------------------------------------------------------------------------*/
@@ -54,10 +54,10 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
         rules_.releaseVelocity(tauGrad, cellAlpha_[celli], 0.5*p.d(), deltaT);
 
     const typename ParcelEntries<CloudType>::entry* entered =
-        capacityLimit_ ? limit_.entries().find(p) : nullptr;
+        this->capacityLimit() ? this->limit().entries().find(p) : nullptr;
     const bool refused = entered && !entered->admitted;
 
-    if (capacityLimit_)
+    if (this->capacityLimit())
     {
         // As coloringFunction's capacity limit (CapacityLimit): the
         // parcel keeps no velocity into a cell that refused it relative to
@@ -68,9 +68,8 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
             release = Zero;
         }
         move =
-            limit_.move
+            this->limit().move
             (
-                this->owner().mesh(),
                 p,
                 Unew - p.U(),
                 (*previousMeanVelocity_)[celli],
@@ -99,7 +98,7 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
         }
     }
 
-    if (capacityLimit_)
+    if (this->capacityLimit())
     {
         // A parcel the correction presses through a wall, inlet or outlet
         // stays in its cell (the move above) and keeps no velocity into
@@ -122,7 +121,7 @@ Foam::vector Foam::PackingModels::MfixSnider<CloudType>::velocityCorrection
 
     this->recordVelocityChange(p, kept - p.U());
 
-    if (capacityLimit_ || magSqr(release) > 0)
+    if (this->capacityLimit() || magSqr(release) > 0)
     {
         // The correction track adds the move to the velocity after it
         this->keepAfterTrack(p, kept, move);

@@ -8,15 +8,13 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::coloringFunctionRules::coloringFunctionRules(const dictionary& coeffs)
+Foam::coloringFunctionRules::coloringFunctionRules
+(
+    const dictionary& coeffs,
+    const scalar closePackFraction
+)
 :
-    closePackFraction_
-    (
-        mppicCoefficients::read
-        (
-            coeffs, "closePackFraction", mppicCoefficients::bounds::open(0, 1)
-        )
-    ),
+    closePackFraction_(closePackFraction),
     e1_
     (
         mppicCoefficients::read

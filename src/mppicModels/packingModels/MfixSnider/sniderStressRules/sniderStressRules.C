@@ -8,15 +8,13 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::sniderStressRules::sniderStressRules(const dictionary& coeffs)
+Foam::sniderStressRules::sniderStressRules
+(
+    const dictionary& coeffs,
+    const scalar closePackFraction
+)
 :
-    closePackFraction_
-    (
-        mppicCoefficients::read
-        (
-            coeffs, "closePackFraction", mppicCoefficients::bounds::open(0, 1)
-        )
-    ),
+    closePackFraction_(closePackFraction),
     pSolid_
     (
         mppicCoefficients::read

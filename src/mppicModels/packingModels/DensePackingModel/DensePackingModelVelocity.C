@@ -22,12 +22,12 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "MfixPackingModel.H"
+#include "DensePackingModel.H"
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::PackingModels::MfixPackingModel<CloudType>::keepAfterTrack
+void Foam::PackingModels::DensePackingModel<CloudType>::keepAfterTrack
 (
     typename CloudType::parcelType& p,
     const vector& kept,
@@ -45,13 +45,17 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::keepAfterTrack
 }
 
 
+// The packs take the step's reactions (PackReactions::apply) and each
+// parcel gets its velocity, the change recorded. A held pack whose fall its
+// support stopped in this step hands the reactions' part down along gravity
+// to the support (CapacityLimit::settledVelocity); with conserveMomentum gas
+// any other pack's share goes to the gas of its cell (UTrans, recorded in
+// cellGasMomentum)
 template<class CloudType>
-template<class Limit>
-void Foam::PackingModels::MfixPackingModel<CloudType>::applyReactions
-(
-    const Limit& limit
-)
+void Foam::PackingModels::DensePackingModel<CloudType>::applyReactions()
 {
+    const CapacityLimit<CloudType>& limit = limit_;
+
     reactions_.apply
     (
         this->owner(),

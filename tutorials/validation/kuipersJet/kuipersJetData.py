@@ -10,7 +10,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
-                                or os.path.join(HERE, "..", ".."),
+                                or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 from mppicPost import internal_field, interpolate  # noqa: E402 (tutorials/lib)
 

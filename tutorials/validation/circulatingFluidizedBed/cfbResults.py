@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Measurements of the circulating fluidized bed (tutorials/circulatingFluidizedBed).
+"""Measurements of the circulating fluidized bed (tutorials/validation/circulatingFluidizedBed).
 
 Usage:
     cfbResults.py [case] [--from T0] [--to T1] [--plot] [--mesh] [--record FILE]
@@ -48,7 +48,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
-                                or os.path.join(HERE, "..", ".."),
+                                or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
 import cfbRecord  # noqa: E402 (beside this file)

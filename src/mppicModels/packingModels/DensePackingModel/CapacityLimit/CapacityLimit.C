@@ -34,9 +34,12 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
 (
     const fvMesh& mesh,
     const dictionary& coeffs,
+    const scalar closePackFraction,
     const bool holdSupportedPacks
 )
 :
+    mesh_(mesh),
+    closePackFraction_(closePackFraction),
     holdSupportedPacks_(holdSupportedPacks),
     entries_(),
     support_(mesh, coeffs),
@@ -52,6 +55,8 @@ Foam::CapacityLimit<CloudType>::CapacityLimit
     const CapacityLimit<CloudType>& cl
 )
 :
+    mesh_(cl.mesh_),
+    closePackFraction_(cl.closePackFraction_),
     holdSupportedPacks_(cl.holdSupportedPacks_),
     entries_(),
     support_(cl.support_),
@@ -107,10 +112,10 @@ void Foam::CapacityLimit<CloudType>::warnOfCutsAcrossGravity
 template<class CloudType>
 void Foam::CapacityLimit<CloudType>::reportFullCell
 (
-    const CloudType& cloud,
-    const scalar closePackFraction
-)
+    const CloudType& cloud
+) const
 {
+    const scalar closePackFraction = closePackFraction_;
     const fvMesh& mesh = cloud.mesh();
 
     boolList occupied(mesh.nCells(), false);
@@ -171,8 +176,7 @@ void Foam::CapacityLimit<CloudType>::reportFullCell
 template<class CloudType>
 Foam::boolList Foam::CapacityLimit<CloudType>::fullCells
 (
-    const CloudType& cloud,
-    const scalar closePackFraction
+    const CloudType& cloud
 ) const
 {
     const fvMesh& mesh = cloud.mesh();
@@ -203,7 +207,7 @@ Foam::boolList Foam::CapacityLimit<CloudType>::fullCells
     boolList full(mesh.nCells());
     forAll(full, celli)
     {
-        const scalar room = closePackFraction*mesh.V()[celli] - volume[celli];
+        const scalar room = closePackFraction_*mesh.V()[celli] - volume[celli];
         full[celli] =
             largest[celli] > 0
          && !cellRoom::fits(largest[celli], room);
@@ -230,16 +234,15 @@ template<class CloudType>
 void Foam::CapacityLimit<CloudType>::startStep
 (
     const CloudType& cloud,
-    const scalar closePackFraction,
     const scalar deltaT
 )
 {
-    entries_.update(cloud, closePackFraction, deltaT);
+    entries_.update(cloud, closePackFraction_, deltaT);
     deltaT_ = deltaT;
 
     if (!fullCellReported_)
     {
-        reportFullCell(cloud, closePackFraction);
+        reportFullCell(cloud);
         fullCellReported_ = true;
     }
 
@@ -268,7 +271,7 @@ void Foam::CapacityLimit<CloudType>::startStep
         return;
     }
 
-    support_.update(cloud.g().value(), fullCells(cloud, closePackFraction));
+    support_.update(cloud.g().value(), fullCells(cloud));
 
     resting_.setSize(cloud.mesh().nCells());
     resting_ = false;
@@ -296,7 +299,6 @@ void Foam::CapacityLimit<CloudType>::endStep(const CloudType& cloud)
 template<class CloudType>
 Foam::vector Foam::CapacityLimit<CloudType>::move
 (
-    const fvMesh& mesh,
     const parcelType& p,
     const vector& dU,
     const vector& uPack,
@@ -306,7 +308,7 @@ Foam::vector Foam::CapacityLimit<CloudType>::move
 ) const
 {
     const vector dX =
-        entries_.limitedCorrection(mesh, p, dU + displacement, deltaT);
+        entries_.limitedCorrection(mesh_, p, dU + displacement, deltaT);
 
     kept = entries_.keptVelocity(p, p.U() + dU, uPack);
 

@@ -29,7 +29,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.environ.get(
-    "MPPIC_PROJECT_DIR", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")),
+    "MPPIC_PROJECT_DIR", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..")),
     "tutorials", "lib"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import kuipersJetResults as jet  # noqa: E402 (beside this file)

@@ -3,15 +3,12 @@
     This file is part of the mppicModels project, GPL-3.0-or-later.
 \*---------------------------------------------------------------------------*/
 
-#include "MfixPackingModel.H"
-#include "packingFaceGradient.H"
-#include "wallPolyPatch.H"
-#include "cellFaceGeometry.H"
+#include "DensePackingModel.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
-Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
+Foam::PackingModels::DensePackingModel<CloudType>::DensePackingModel
 (
     const dictionary& dict,
     CloudType& owner,
@@ -23,21 +20,33 @@ Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
     // particleStressModel entry, which these models do not use
     PackingModel<CloudType>(owner),
     coeffs_(checkedCoeffs(dict, type, modelKeywords)),
+    closePackFraction_(readClosePackFraction(coeffs_)),
     conserveMomentum_(readConserveMomentum(coeffs_) != "none"),
-    freePackReactionsToGas_(readConserveMomentum(coeffs_) == "gas")
+    freePackReactionsToGas_(readConserveMomentum(coeffs_) == "gas"),
+    capacityLimit_(CapacityLimit<CloudType>::mode(coeffs_) != "none"),
+    limit_
+    (
+        owner.mesh(),
+        coeffs_,
+        closePackFraction_,
+        capacityLimit_ && coeffs_.lookupOrDefault("holdSupportedPacks", true)
+    )
 {}
 
 
 template<class CloudType>
-Foam::PackingModels::MfixPackingModel<CloudType>::MfixPackingModel
+Foam::PackingModels::DensePackingModel<CloudType>::DensePackingModel
 (
-    const MfixPackingModel<CloudType>& cm
+    const DensePackingModel<CloudType>& cm
 )
 :
     PackingModel<CloudType>(cm),
     coeffs_(cm.coeffs_),
+    closePackFraction_(cm.closePackFraction_),
     conserveMomentum_(cm.conserveMomentum_),
-    freePackReactionsToGas_(cm.freePackReactionsToGas_)
+    freePackReactionsToGas_(cm.freePackReactionsToGas_),
+    capacityLimit_(cm.capacityLimit_),
+    limit_(cm.limit_)
 {}
 
 
@@ -60,7 +69,7 @@ namespace Foam
         (
             IOobject
             (
-                "mfixPackingModel:cellValues",
+                "densePackingModel:cellValues",
                 mesh.time().timeName(),
                 mesh,
                 IOobject::NO_READ,
@@ -91,7 +100,7 @@ namespace Foam
 
 
 template<class CloudType>
-void Foam::PackingModels::MfixPackingModel<CloudType>::cacheCellValues()
+void Foam::PackingModels::DensePackingModel<CloudType>::cacheCellValues()
 {
     const fvMesh& mesh = this->owner().mesh();
 
@@ -128,173 +137,59 @@ void Foam::PackingModels::MfixPackingModel<CloudType>::cacheCellValues()
 
 template<class CloudType>
 Foam::tmp<Foam::scalarField>
-Foam::PackingModels::MfixPackingModel<CloudType>::cellPackingValues() const
+Foam::PackingModels::DensePackingModel<CloudType>::cellPackingValues() const
 {
     return packingField_->primitiveField();
-}
-
-
-template<class CloudType>
-Foam::scalar Foam::PackingModels::MfixPackingModel<CloudType>::cellValue
-(
-    const label celli
-) const
-{
-    return cellValues_[celli];
-}
-
-
-template<class CloudType>
-Foam::vector Foam::PackingModels::MfixPackingModel<CloudType>::cellUMean
-(
-    const label celli
-) const
-{
-    return cellUMean_[celli];
-}
-
-
-template<class CloudType>
-Foam::scalar Foam::PackingModels::MfixPackingModel<CloudType>::alphaAt
-(
-    const typename CloudType::parcelType& p
-) const
-{
-    return volumeAverage_->interpolate(p.coordinates(), p.currentTetIndices());
-}
-
-
-template<class CloudType>
-Foam::vector Foam::PackingModels::MfixPackingModel<CloudType>::uMeanAt
-(
-    const typename CloudType::parcelType& p
-) const
-{
-    return uAverage_->interpolate(p.coordinates(), p.currentTetIndices());
-}
-
-
-template<class CloudType>
-Foam::vector Foam::PackingModels::MfixPackingModel<CloudType>::packingGradAt
-(
-    const typename CloudType::parcelType& p
-) const
-{
-    return
-        packingField_->interpolateGrad
-        (
-            p.coordinates(),
-            p.currentTetIndices()
-        );
-}
-
-
-template<class CloudType>
-typename Foam::PackingModels::MfixPackingModel<CloudType>::neighbourState
-Foam::PackingModels::MfixPackingModel<CloudType>::neighbourAhead
-(
-    const typename CloudType::parcelType& p
-) const
-{
-    const fvMesh& mesh = this->owner().mesh();
-    const label celli = p.cell();
-
-    // The face the parcel moves toward most directly
-    neighbourState ahead;
-    const label towardFace = cellFaceGeometry::faceToward(mesh, celli, p.U());
-
-    if (towardFace < 0)
-    {
-        return ahead;
-    }
-    ahead.normal = cellFaceGeometry::outwardNormal(mesh, celli, towardFace);
-
-    if (mesh.isInternalFace(towardFace))
-    {
-        const label nbr =
-            cellFaceGeometry::cellAcross(mesh, celli, towardFace);
-
-        ahead.found = true;
-        ahead.value = cellValues_[nbr];
-        ahead.uMean = cellUMean_[nbr];
-        ahead.cell = cellNeighbours_->toGlobal(nbr);
-        return ahead;
-    }
-
-    const label patchi = mesh.boundaryMesh().whichPatch(towardFace);
-    const polyPatch& patch = mesh.boundaryMesh()[patchi];
-
-    if (coupledValues_.set(patchi))
-    {
-        const label patchFacei = patch.whichFace(towardFace);
-        ahead.found = true;
-        ahead.value = coupledValues_[patchi][patchFacei];
-        ahead.uMean = coupledUMean_[patchi][patchFacei];
-        ahead.cell = cellNeighbours_->across(celli, towardFace);
-    }
-    else if (isA<wallPolyPatch>(patch))
-    {
-        ahead.found = true;
-        ahead.value = wallValue(cellValues_[celli]);
-        ahead.uMean = Zero;
-    }
-
-    return ahead;
-}
-
-
-template<class CloudType>
-Foam::vector Foam::PackingModels::MfixPackingModel<CloudType>::faceGradientAt
-(
-    const typename CloudType::parcelType& p
-) const
-{
-    return
-        packingFaceGradient::at
-        (
-            this->owner().mesh(),
-            p.cell(),
-            p.position(),
-            cellValues_,
-            coupledValues_,
-            wallValue(cellValues_[p.cell()])
-        );
-}
-
-
-template<class CloudType>
-Foam::vector
-Foam::PackingModels::MfixPackingModel<CloudType>::cornerNodeFaceGradientAt
-(
-    const typename CloudType::parcelType& p
-) const
-{
-    if (!kernel_->hexahedral(p.cell()))
-    {
-        return faceGradientAt(p);
-    }
-
-    return
-        kernel_->cornerNodeFaceGradient
-        (
-            cellValues_, ghostValues_, cellBeyond_, ghostBeyond_,
-            p.position(), p.cell()
-        );
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::PackingModels::MfixPackingModel<CloudType>::cacheFields
+void Foam::PackingModels::DensePackingModel<CloudType>::beforeMotion()
+{
+    // Nothing recorded yet while parcels that have moved before (age > 0)
+    // are in the cloud: they were read from a written time. Record where
+    // they are, which is where the uninterrupted run's last step left them
+    if (tracksEntries())
+    {
+        limit_.beforeMotion(this->owner());
+    }
+}
+
+
+template<class CloudType>
+void Foam::PackingModels::DensePackingModel<CloudType>::cacheFields
 (
     const bool store
 )
 {
     PackingModel<CloudType>::cacheFields(store);
 
+    if (store && tracksEntries())
+    {
+        // Decide the step's entries (and the held cells) first: a model's
+        // cell values may depend on them (cellPackingValues)
+        limit_.startStep
+        (
+            this->owner(),
+            this->owner().db().time().deltaTValue()
+        );
+    }
+
     if (!store)
     {
+        // End of the packing step: the packs take their impulses back,
+        // then the limit records where each parcel now is
+        if (conserveMomentum_)
+        {
+            applyReactions();
+        }
+        if (tracksEntries())
+        {
+            limit_.endStep(this->owner());
+        }
+
         volumeAverage_ = nullptr;
         uAverage_ = nullptr;
         packingField_.clear();

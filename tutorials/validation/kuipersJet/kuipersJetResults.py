@@ -56,7 +56,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
-                                or os.path.join(HERE, "..", ".."),
+                                or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import kuipersJetRecord  # noqa: E402 (beside this file)
 import kuipersJetSlabs as slabs  # noqa: E402 (beside this file)

@@ -23,7 +23,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
-                                or os.path.join(HERE, "..", ".."),
+                                or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
 import validationRecord as record  # noqa: E402 (tutorials/lib)

@@ -9,16 +9,16 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "MfixPackingModel.H"
+#include "DensePackingModel.H"
 #include "boundedCoefficient.H"
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
 
 template<class CloudType>
 const Foam::wordList
-Foam::PackingModels::MfixPackingModel<CloudType>::keywords
+Foam::PackingModels::DensePackingModel<CloudType>::keywords
 ({
-    "conserveMomentum"
+    "closePackFraction", "conserveMomentum", "holdSupportedPacks"
 });
 
 
@@ -26,7 +26,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::keywords
 
 template<class CloudType>
 const Foam::dictionary&
-Foam::PackingModels::MfixPackingModel<CloudType>::checkedCoeffs
+Foam::PackingModels::DensePackingModel<CloudType>::checkedCoeffs
 (
     const dictionary& dict,
     const word& type,
@@ -46,7 +46,7 @@ Foam::PackingModels::MfixPackingModel<CloudType>::checkedCoeffs
 
 template<class CloudType>
 Foam::word
-Foam::PackingModels::MfixPackingModel<CloudType>::readConserveMomentum
+Foam::PackingModels::DensePackingModel<CloudType>::readConserveMomentum
 (
     const dictionary& coeffs
 )

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The L-valve's response to its aeration (tutorials/circulatingFluidizedBed,
+"""The L-valve's response to its aeration (tutorials/validation/circulatingFluidizedBed,
 issue 22): where the aeration gas goes and what solids it moves.
 
 Usage:
