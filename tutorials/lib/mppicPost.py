@@ -88,14 +88,16 @@ def read_table(path):
     return rows
 
 
-def function_object_table(case, name):
-    """Rows of postProcessing/<name>/<start>/<name>.dat; a continued run
+def function_object_table(case, name, file=None):
+    """Rows of postProcessing/<name>/<start>/<file>.dat (file: the
+    function object's name unless given, e.g. phases); a continued run
     writes a folder per start time, and its rows replace the earlier
     pieces' rows from its first time on. A piece that starts where an
     earlier one did finds the file there and writes <name>_<start>.dat
     beside it (OpenFOAM's functionObjectFile): it comes after the file."""
     rows = []
-    paths = [p for pattern in (name + ".dat", name + "_*.dat")
+    file = file or name
+    paths = [p for pattern in (file + ".dat", file + "_*.dat")
              for p in glob.glob(os.path.join(case, "postProcessing", name, "*", pattern))]
     for path in sorted(paths, key=lambda p: (float(p.split(os.sep)[-2]), len(p), p)):
         new = read_table(path)
@@ -233,22 +235,48 @@ def lagrangian_field(path):
     return [[float(v)] for v in body.split()]
 
 
-def cell_solids_fractions(case, time, volumes, cloud="kinematicCloud"):
-    """Each cell's solids fraction at a written time, from the parcels
-    themselves: sum of nParticle*pi/6*d^3 over the parcels whose
-    coordinates name the cell, over the cell volumes (a numpy array); and
-    the parcel volumes. None when the time holds no cloud."""
+def parcel_cells_volumes(case, time, cloud="kinematicCloud"):
+    """The parcels of a written time: each one's cell (from its
+    coordinates), its solids volume nParticle*pi/6*d^3 and its typeId (its
+    solids phase; -1 when not written): numpy arrays, or Nones when the
+    time holds no cloud."""
     folder = os.path.join(case, time, "lagrangian", cloud)
     if not os.path.exists(os.path.join(folder, "coordinates")):
-        return None, None
+        return None, None, None
     text = open(os.path.join(folder, "coordinates")).read()
     cells = np.array(re.findall(r"\)\s+(-?\d+)\s+-?\d+\s+-?\d+", text),
                      dtype=int)
     n = np.array(lagrangian_field(os.path.join(folder, "nParticle")))[:, 0]
     d = np.array(lagrangian_field(os.path.join(folder, "d")))[:, 0]
-    parcel = n*math.pi/6*d**3
+    phase = np.full(len(cells), -1, dtype=int)
+    if os.path.exists(os.path.join(folder, "typeId")):
+        phase = np.array(lagrangian_field(os.path.join(folder, "typeId")),
+                         dtype=float)[:, 0].astype(int)
+    return cells, n*math.pi/6*d**3, phase
+
+
+def cell_solids_fractions(case, time, volumes, cloud="kinematicCloud"):
+    """Each cell's solids fraction at a written time, from the parcels
+    themselves: sum of nParticle*pi/6*d^3 over the parcels whose
+    coordinates name the cell, over the cell volumes (a numpy array); and
+    the parcel volumes. None when the time holds no cloud."""
+    cells, parcel, _ = parcel_cells_volumes(case, time, cloud)
+    if cells is None:
+        return None, None
     return np.bincount(cells, weights=parcel,
                        minlength=len(volumes))/volumes, parcel
+
+
+def phase_solids_fractions(case, time, volumes, cloud="kinematicCloud"):
+    """Each solids phase's cell solids fractions at a written time (as
+    cell_solids_fractions, over the parcels of that typeId): a dict typeId
+    -> numpy array, or None when the time holds no cloud."""
+    cells, parcel, phase = parcel_cells_volumes(case, time, cloud)
+    if cells is None:
+        return None
+    return {int(k): np.bincount(cells[phase == k], weights=parcel[phase == k],
+                                minlength=len(volumes))/volumes
+            for k in np.unique(phase)}
 
 
 def cells_above_bound(case, close_pack, cloud="kinematicCloud"):
@@ -289,6 +317,18 @@ def layer_means(values, centres, axis=1, digits=9):
         layers.setdefault(round(c[axis], digits), []).append(v)
     heights = sorted(layers)
     return heights, [sum(layers[h])/len(layers[h]) for h in heights]
+
+
+def profile_crossing(ys, profile, level, from_top):
+    """Height where a profile over ascending heights ys falls through level
+    going up (linear between points): the highest such crossing (from_top)
+    or the lowest; nan if none."""
+    order = range(len(ys) - 2, -1, -1) if from_top else range(len(ys) - 1)
+    for j in order:
+        if profile[j] >= level > profile[j + 1]:
+            f = (profile[j] - level)/(profile[j] - profile[j + 1])
+            return ys[j] + f*(ys[j + 1] - ys[j])
+    return float("nan")
 
 
 # * * * * * * * * * * * * * * * * Statistics * * * * * * * * * * * * * * * * #

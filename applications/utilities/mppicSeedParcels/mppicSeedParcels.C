@@ -38,6 +38,18 @@ Description
         nParticle = alpha_s*V_region/(nParcels*pi*d^3/6)
     particles, so that the seeded solids volume is alpha_s*V_region exactly.
 
+    A mixture of solids phases (MFiX's solids phases m = 1..M, each with
+    its diameter D_P0(m)): a phases dictionary instead of diameter, one
+    sub-dictionary per phase with its diameter, its share of the solids
+    volume (volumeFraction; the shares add up to 1) and its parcelsPerCell
+    or statisticalWeight. mixing mixed seeds every phase over the whole
+    region at solidsFraction times its share; mixing layered splits the
+    region into layers along layerDirection, the first phase lowest, each
+    layer holding its phase's share of the region's volume, and seeds each
+    layer with its phase at solidsFraction. Each phase gets its own
+    positions file and nParticle; its density and phase index belong to
+    the cloud's injection model (phaseManualInjection).
+
     Instead of parcelsPerCell, statisticalWeight W (particles per parcel,
     MFiX's PIC_CONST_STATWT) sets the parcel density to alpha_s/(W*pi*d^3/6)
     per unit volume, i.e. parcelsPerCell = alpha_s*V_region/
@@ -79,6 +91,17 @@ Usage
                          (lattice, cell)                        | 0.5    | [0, 1)
         seed           | random seed                           | 1       | integer
         positionsFile  | output file in constant/              | kinematicCloudPositions |
+        phases         | one dictionary per solids phase, instead of diameter | (none: one phase) |
+        mixing         | phases mixed over the region or layered | mixed | mixed, layered
+        layerDirection | the direction the layers follow (layered) | (0 1 0) | not zero
+    \endtable
+    A phase's dictionary (phases/<name>):
+    \table
+        Keyword        | Meaning                               | Default | Range
+        diameter       | particle diameter [m] (MFiX: D_P0)    | (required) | (0, inf)
+        volumeFraction | the phase's share of the solids volume (MFiX: IC_EP_S(m)/sum) | (required) | (0, 1], adding up to 1
+        parcelsPerCell, statisticalWeight | as above, for the phase | (one of them) | as above
+        positionsFile  | output file in constant/              | <positionsFile>.<name> |
     \endtable
     Exactly one of parcelsPerCell and statisticalWeight; statisticalWeight
     with arrangement cell stops with a FatalIOError.
@@ -90,6 +113,13 @@ Usage
     parcelsPerCell (the mean per cell); a cloud dictionary uses it as
         #include "seededParcels"
         ... nParticle $nParticle;
+    With phases: one positions file per phase and, in seededParcels, one
+    sub-dictionary per phase with those entries and its positionsFile, and
+    the totals nParcels and solidsVolume; a cloud dictionary uses them as
+        ... nParticle $:<name>.nParticle;
+    A phase that places no parcel, phases' volumeFraction not adding up to
+    1, a diameter or share out of range, or an unknown keyword stops with
+    a FatalIOError naming the dictionary, the keyword and the value.
 
 \*---------------------------------------------------------------------------*/
 
@@ -101,55 +131,10 @@ using namespace Foam;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-// Cells of the region: centres in the box, or the cellZone
-boolList regionCells(const fvMesh& mesh, const dictionary& dict)
-{
-    const word region(dict.get<word>("region"));
-    boolList inRegion(mesh.nCells(), false);
-
-    if (region == "box")
-    {
-        const boundBox box(dict.lookup("box"));
-        if (!(box.min() < box.max()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Dictionary " << dict.name() << ", keyword box: "
-                << box << " must have min < max in every direction"
-                << exit(FatalIOError);
-        }
-        forAll(inRegion, celli)
-        {
-            inRegion[celli] = box.contains(mesh.C()[celli]);
-        }
-    }
-    else if (region == "cellZone")
-    {
-        const word zoneName(dict.get<word>("cellZone"));
-        const label zonei = mesh.cellZones().findZoneID(zoneName);
-        if (zonei < 0)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Dictionary " << dict.name() << ", keyword cellZone: "
-                << "unknown zone " << zoneName << "; zones: "
-                << mesh.cellZones().names() << exit(FatalIOError);
-        }
-        for (const label celli : mesh.cellZones()[zonei])
-        {
-            inRegion[celli] = true;
-        }
-    }
-    else
-    {
-        FatalIOErrorInFunction(dict)
-            << "Dictionary " << dict.name() << ", keyword region: value "
-            << region << " is not one of (box cellZone)" << exit(FatalIOError);
-    }
-
-    return inRegion;
-}
-
-
+#include "seedingRegion.H"
 #include "parcelArrangements.H"
+#include "phaseSeeding.H"
+#include "solidsPhases.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -180,9 +165,18 @@ int main(int argc, char *argv[])
     );
 
     using namespace mppicCoefficients;
+    checkKeywords
+    (
+        dict,
+        {
+            "FoamFile", "region", "box", "cellZone", "solidsFraction",
+            "parcelsPerCell", "statisticalWeight", "diameter", "arrangement",
+            "jitter", "seed", "positionsFile", "phases", "mixing",
+            "layerDirection"
+        },
+        "mppicSeedParcels"
+    );
     const scalar alpha = read(dict, "solidsFraction", bounds::open(0, 1));
-    const scalar diameter = read(dict, "diameter", bounds::above(0));
-    const scalar jitter = read(dict, "jitter", 0.5, bounds::closedOpen(0, 1));
     const label seed = dict.lookupOrDefault<label>("seed", 1);
     const word positionsFile
     (
@@ -191,113 +185,9 @@ int main(int argc, char *argv[])
 
     const boolList inRegion(regionCells(mesh, dict));
 
-    label nRegionCells = 0;
-    const scalar volume = regionVolume(mesh, inRegion, nRegionCells);
-    if (nRegionCells == 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Dictionary " << dict.name() << ": the region has no cells"
-            << exit(FatalIOError);
-    }
-
-    const scalar particleVolume = constant::mathematical::pi/6*pow3(diameter);
-    const word arrangement(dict.lookupOrDefault<word>("arrangement", "lattice"));
-
-    // Parcels per mean cell: given, or from the statistical weight
-    const bool byCount = dict.found("parcelsPerCell");
-    const bool byWeight = dict.found("statisticalWeight");
-    if (byCount == byWeight)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Dictionary " << dict.name() << ": give exactly one of the "
-            << "keywords parcelsPerCell and statisticalWeight ("
-            << (byCount ? "both" : "neither") << " given)"
-            << exit(FatalIOError);
-    }
-    scalar perCell = 0;
-    if (byCount)
-    {
-        perCell = read(dict, "parcelsPerCell", bounds::atLeast(1));
-    }
-    else
-    {
-        const scalar weight =
-            read(dict, "statisticalWeight", bounds::atLeast(1));
-        if (arrangement == "cell")
-        {
-            FatalIOErrorInFunction(dict)
-                << "Dictionary " << dict.name() << ", keyword "
-                << "statisticalWeight: value " << weight << " needs "
-                << "arrangement lattice or volume (arrangement cell takes an "
-                << "integer parcelsPerCell)" << exit(FatalIOError);
-        }
-        perCell = alpha*volume/(weight*particleVolume*nRegionCells);
-        Info<< "Statistical weight " << weight << ": " << perCell
-            << " parcels per mean cell" << nl;
-    }
-
-    Random rndGen(seed);
-
-    DynamicList<point> positions;
-    if (arrangement == "lattice")
-    {
-        positions = latticePositions(mesh, inRegion, perCell, jitter, rndGen);
-    }
-    else if (arrangement == "cell")
-    {
-        if (perCell != label(perCell))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Dictionary " << dict.name() << ", keyword parcelsPerCell: "
-                << "value " << perCell << " must be an integer with "
-                << "arrangement cell" << exit(FatalIOError);
-        }
-        positions =
-            cellPositions(mesh, inRegion, label(perCell), jitter, rndGen);
-    }
-    else if (arrangement == "volume")
-    {
-        positions = volumePositions(mesh, inRegion, perCell, rndGen);
-    }
-    else
-    {
-        FatalIOErrorInFunction(dict)
-            << "Dictionary " << dict.name() << ", keyword arrangement: value "
-            << arrangement << " is not one of (lattice cell volume)"
-            << exit(FatalIOError);
-    }
-
-    if (positions.empty())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Dictionary " << dict.name() << ": no parcel placed in "
-            << "the region (" << perCell << " parcels per mean cell); "
-            << "raise parcelsPerCell or lower statisticalWeight"
-            << exit(FatalIOError);
-    }
-
-    const scalar solidsVolume = alpha*volume;
-    const scalar nParticle = solidsVolume/(positions.size()*particleVolume);
-
-    IOField<point> positionsIO
-    (
-        IOobject
-        (
-            positionsFile,
-            runTime.constant(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        std::move(positions)
-    );
-    positionsIO.write();
-
     // Full precision: nParticle sets the seeded solids volume
     IOstream::defaultPrecision(max(IOstream::defaultPrecision(), 15u));
-
-    IOdictionary seeded
+    IOdictionary summary
     (
         IOobject
         (
@@ -309,21 +199,97 @@ int main(int argc, char *argv[])
             false
         )
     );
-    seeded.add("nParticle", nParticle);
-    seeded.add("nParcels", positionsIO.size());
-    seeded.add("solidsVolume", solidsVolume);
-    seeded.add("regionVolume", volume);
-    seeded.add("nCells", nRegionCells);
-    seeded.add("parcelsPerCell", scalar(positionsIO.size())/nRegionCells);
-    seeded.regIOobject::write();
 
-    Info<< "Seeded " << positionsIO.size() << " parcels in " << nRegionCells
-        << " cells (" << scalar(positionsIO.size())/nRegionCells
-        << " per cell), arrangement " << arrangement
-        << nl << "nParticle = " << nParticle << " for solids fraction "
-        << alpha << " (solids volume " << solidsVolume << " m3)" << nl
-        << "Wrote constant/" << positionsFile << " and constant/seededParcels"
-        << nl << "End" << endl;
+    if (!dict.found("phases"))
+    {
+        const scalar diameter = read(dict, "diameter", bounds::above(0));
+        Random rndGen(seed);
+        seededParcels seeded =
+            seedRegion(mesh, dict, dict, inRegion, alpha, diameter, rndGen);
+
+        addSummary(summary, seeded);
+        Info<< "Seeded " << seeded.positions.size() << " parcels in "
+            << seeded.nCells << " cells ("
+            << scalar(seeded.positions.size())/seeded.nCells << " per cell)"
+            << nl << "nParticle = " << seeded.nParticle
+            << " for solids fraction " << alpha << " (solids volume "
+            << seeded.solidsVolume << " m3)" << nl;
+        writePositions(mesh, positionsFile, seeded.positions);
+        Info<< "Wrote constant/" << positionsFile << nl;
+    }
+    else
+    {
+        const solidsPhases phases(dict, positionsFile);
+        const word mixing
+        (
+            readChoice(dict, "mixing", "mixed", {"mixed", "layered"})
+        );
+
+        List<boolList> layers;
+        if (mixing == "layered")
+        {
+            vector direction(dict.lookupOrDefault("layerDirection", vector(0, 1, 0)));
+            if (mag(direction) < VSMALL)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Dictionary " << dict.name() << ", keyword "
+                    << "layerDirection: value " << direction
+                    << " must not be zero" << exit(FatalIOError);
+            }
+            layers = regionLayers
+            (
+                mesh, inRegion, direction/mag(direction), phases.fractions
+            );
+        }
+
+        scalar solidsVolume = 0;
+        label nParcels = 0;
+        forAll(phases.names, phasei)
+        {
+            const dictionary& phaseDict = phases.dicts[phasei];
+            Random rndGen(seed + phasei);
+            seededParcels seeded =
+            (
+                mixing == "layered"
+              ? seedRegion
+                (
+                    mesh, phaseDict, dict, layers[phasei], alpha,
+                    phases.diameters[phasei], rndGen
+                )
+              : seedRegion
+                (
+                    mesh, phaseDict, dict, inRegion,
+                    alpha*phases.fractions[phasei], phases.diameters[phasei],
+                    rndGen
+                )
+            );
+
+            dictionary phaseSummary;
+            addSummary(phaseSummary, seeded);
+            phaseSummary.add("positionsFile", phases.positionsFiles[phasei]);
+            summary.add(phases.names[phasei], phaseSummary);
+            solidsVolume += seeded.solidsVolume;
+            nParcels += seeded.positions.size();
+
+            Info<< "Phase " << phases.names[phasei] << ": "
+                << seeded.positions.size() << " parcels in " << seeded.nCells
+                << " cells, nParticle = " << seeded.nParticle
+                << ", solids volume " << seeded.solidsVolume << " m3" << nl;
+            writePositions
+            (
+                mesh, phases.positionsFiles[phasei], seeded.positions
+            );
+            Info<< "Wrote constant/" << phases.positionsFiles[phasei] << nl;
+        }
+        summary.add("nParcels", nParcels);
+        summary.add("solidsVolume", solidsVolume);
+        Info<< "Seeded " << phases.names.size() << " solids phases, "
+            << mixing << ": " << nParcels << " parcels, solids volume "
+            << solidsVolume << " m3" << nl;
+    }
+
+    summary.regIOobject::write();
+    Info<< "Wrote constant/seededParcels" << nl << "End" << endl;
 
     return 0;
 }

@@ -102,26 +102,17 @@ def layer_profile(case, time):
         post.internal_field(os.path.join(case, "0", "C")))
 
 
-def crossing(ys, profile, level, from_top):
-    """Height where the profile falls through level going up; the highest
-    such crossing (from_top) or the lowest."""
-    order = range(len(ys) - 2, -1, -1) if from_top else range(len(ys) - 1)
-    for j in order:
-        if profile[j] >= level > profile[j + 1]:
-            f = (profile[j] - level)/(profile[j] - profile[j + 1])
-            return ys[j] + f*(ys[j + 1] - ys[j])
-    return float("nan")
-
-
 def summary(case, time):
     """The fronts of the run in case at time, with their references."""
     es0, y0 = seeding(case)
     ys, profile = layer_profile(case, time)
     v0 = start_velocity(case)
     return dict(es0=es0, ys=ys, profile=profile, v0=v0,
-                settling=crossing(ys, profile, es0/2, from_top=True),
-                filling=crossing(ys, profile, (CLOSE_PACK + es0)/2,
-                                 from_top=False),
+                settling=post.profile_crossing(ys, profile, es0/2,
+                                               from_top=True),
+                filling=post.profile_crossing(ys, profile,
+                                              (CLOSE_PACK + es0)/2,
+                                              from_top=False),
                 refs=references(es0, y0, float(time), v0),
                 mfix=MFIX_PIC.get(round(es0, 2), (float("nan"), float("nan"))))
 

@@ -209,6 +209,14 @@ bool Foam::functionObjects::bedPressureDrop::read(const dictionary& dict)
     }
 
     cloudName_ = dict.lookupOrDefault<word>("cloud", word::null);
+    phases_.clear();
+    if (!cloudName_.empty())
+    {
+        phases_.reset
+        (
+            new cloudPhases(mesh_, name(), cloudName_, writeToFile())
+        );
+    }
 
     crossSection_ = 0;
     if (dict.found("crossSection"))
@@ -289,6 +297,10 @@ bool Foam::functionObjects::bedPressureDrop::write()
             << ", deltaP/weight = " << dP/max(weight, VSMALL);
     }
     Log << endl;
+    if (phases_.valid())
+    {
+        phases_->evaluate();
+    }
 
     if (writeToFile())
     {

@@ -263,6 +263,7 @@ bool Foam::functionObjects::packingMonitor::read(const dictionary& dict)
 
     closePackFraction_ = readClosePackFraction(dict);
     writePackingForce_ = readWritePackingForce(dict);
+    phases_.reset(new cloudPhases(mesh_, name(), cloudName_, writeToFile()));
 
     return true;
 }
@@ -298,6 +299,7 @@ bool Foam::functionObjects::packingMonitor::write()
         << s.maxAlphaAveraged << " (averaged), " << s.maxAlphaCell
         << " (cell); cells above close pack " << s.nCellsAboveClosePack
         << "; parcels crossing > 1 cell " << s.nFastParcels << endl;
+    phases_->evaluate();
 
     if (writeToFile())
     {

@@ -116,10 +116,10 @@ void Foam::cloudInputChecks::injectionPositions
         cloudProperties,
         [&mesh](const dictionary& model)
         {
+            const word type(model.lookupOrDefault<word>("type", word::null));
             if
             (
-                model.lookupOrDefault<word>("type", word::null)
-             == "manualInjection"
+                (type == "manualInjection" || type == "phaseManualInjection")
              && !model.lookupOrDefault<bool>("ignoreOutOfBounds", false)
             )
             {

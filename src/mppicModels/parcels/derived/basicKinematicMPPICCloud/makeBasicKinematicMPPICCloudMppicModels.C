@@ -13,10 +13,12 @@ Description
 
 #include "makeMppicParcelPackingModels.H"
 #include "makeMppicParcelForces.H"
+#include "makeMppicInjectionModels.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 makeMppicParcelPackingModels(basicKinematicMPPICCloud);
 makeMppicParcelForces(basicKinematicMPPICCloud);
+makeMppicInjectionModels(basicKinematicMPPICCloud);
 
 // ************************************************************************* //
