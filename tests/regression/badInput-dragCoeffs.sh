@@ -4,9 +4,10 @@
 # with blend maybe, constantCdDrag with feedback maybe, SyamlalOBrienDrag
 # with c1 -1, GidaspowDrag with slipFrom average, GidaspowDrag
 # with alphac naming no field, GidaspowDrag with a misspelt switchFractoin
-# and StokesDrag with slipForm -> FatalError naming the keyword and its
-# range (or the field, or for a misspelling one of the valid keywords),
-# exit status 1, no crash.
+# and StokesDrag with slipForm, BVKDrag with polydisperseCorrection
+# Sauter -> FatalError naming the keyword and its range (or the field, or
+# for a misspelling one of the valid keywords, or the value and the
+# allowed values), exit status 1, no crash.
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
 prepareCase "$runDir/case"
@@ -20,7 +21,8 @@ for bad in "constantCdDrag { Cd -1; }:Cd:[0, inf)" \
            "GidaspowDrag { alphac alpha.air; slipFrom average; }:slipFrom:average" \
            "GidaspowDrag { alphac alpha.gas; }:alphac:alpha.gas" \
            "GidaspowDrag { alphac alpha.air; switchFractoin 0.8; }:unknown keyword switchFractoin:switchFraction" \
-           "StokesDrag { alphac alpha.air; slipForm cellMean; }:unknown keyword slipForm:voidageExponent"
+           "StokesDrag { alphac alpha.air; slipForm cellMean; }:unknown keyword slipForm:voidageExponent" \
+           "BVKDrag { alphac alpha.air; polydisperseCorrection Sauter; }:keyword polydisperseCorrection:value Sauter is not one of 2(none Beetstra)"
 do
     force="${bad%%:*}"
     rest="${bad#*:}"

@@ -22,7 +22,11 @@ Description
     at Re = 0 for phi >= 0.4,
     plus Wen-Yu above Re = 1000 (w = 200 m/s, ag = 0.9: Re = 1200) and the
     Gidaspow blend weight: 0.5 at the switch, atan(+-262.5*0.01)/pi + 0.5
-    one hundredth either side, so that the blended K is continuous.
+    one hundredth either side, so that the blended K is continuous,
+    and Beetstra et al.'s polydisperse factor of K(<d>), y = d/<d>,
+        f(y)/(f(1)*y^2),  f(y) = ag*y + (1 - ag)*y^2 + 0.064*ag*y^3
+    exactly 1 at y = 1, and at (ag, y) = (0.6, 0.75), (0.6, 1.5),
+    (0.45, 0.5), (0.99, 3) the values of python on this formula.
 
 \*---------------------------------------------------------------------------*/
 
@@ -188,6 +192,34 @@ int main(int argc, char *argv[])
       + Foam::name(rawJump) + " > 0.01)",
         rawJump > 0.01
     );
+
+    for (const scalar ag : {0.99, 0.6, 0.45})
+    {
+        checkClose
+        (
+            "polydisperse factor exactly 1 at y = 1, ag = " + Foam::name(ag),
+            dragCorrelations::beetstraPolydisperseScale(ag, 1),
+            1,
+            0
+        );
+    }
+    const scalar agYFactor[4][3] =
+    {
+        {0.6, 0.75, 1.1833590138674883},
+        {0.6, 1.5, 0.8258859784283513},
+        {0.45, 0.5, 1.4234059097978229},
+        {0.99, 3, 0.4984953355401745}
+    };
+    for (const auto& c : agYFactor)
+    {
+        checkClose
+        (
+            "polydisperse factor at ag = " + Foam::name(c[0]) + ", y = "
+          + Foam::name(c[1]),
+            dragCorrelations::beetstraPolydisperseScale(c[0], c[1]),
+            c[2]
+        );
+    }
 
     return summary();
 }

@@ -27,77 +27,15 @@ Description
 
 #include "fvCFD.H"
 #include "basicKinematicMPPICCloud.H"
-#include "unitTest.H"
+#include "particleForceTest.H"
 #include "uniformAirFields.H"
 
 using namespace Foam;
 using namespace Foam::unitTest;
 
-typedef basicKinematicMPPICCloud::kinematicCloudType cloudType;
-typedef cloudType::parcelType parcelType;
-
 #include "handDragValues.H"
 
 using namespace Foam::handDragValues;
-
-
-// * * * * * * * * * * * * * * * * * Helpers * * * * * * * * * * * * * * * //
-
-// The force selected by name with its coefficients: model { text }
-autoPtr<ParticleForce<cloudType>> select
-(
-    cloudType& cloud,
-    const fvMesh& mesh,
-    const word& model,
-    const string& text
-)
-{
-    const dictionary forces(IStringStream(model + " { " + text + " }")());
-    return
-        ParticleForce<cloudType>::New(cloud, mesh, forces.subDict(model), model);
-}
-
-
-// Sp (coupled) and Su (non-coupled) of a force on the parcel
-Pair<scalar> coefficients
-(
-    const ParticleForce<cloudType>& force,
-    cloudType& cloud,
-    parcelType& p,
-    vector& Su
-)
-{
-    parcelType::trackingData td(cloud);
-    p.setCellValues(cloud, td);
-    const scalar mass = p.mass();
-    const scalar Re = p.Re(td);
-
-    const forceSuSp coupled =
-        force.calcCoupled(p, td, 1e-5, mass, Re, td.muc());
-    const forceSuSp nonCoupled =
-        force.calcNonCoupled(p, td, 1e-5, mass, Re, td.muc());
-    Su = nonCoupled.Su() + coupled.Su();
-    return Pair<scalar>(coupled.Sp(), nonCoupled.Sp());
-}
-
-
-// True when selecting the model with these coefficients raises a
-// FatalIOError whose message holds all the words
-bool rejects
-(
-    cloudType& cloud,
-    const fvMesh& mesh,
-    const word& model,
-    const string& text,
-    const wordList& words
-)
-{
-    return raisesError
-    (
-        [&]() { select(cloud, mesh, model, text); },
-        words
-    );
-}
 
 
 // * * * * * * * * * * * * * * * * * * Main * * * * * * * * * * * * * * * * //

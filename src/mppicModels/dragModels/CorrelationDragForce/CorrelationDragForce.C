@@ -47,13 +47,15 @@ Foam::CorrelationDragForce<CloudType, Law>::CorrelationDragForce
 :
     MppicDragForce<CloudType>(owner, mesh, dict, typeName),
     law_(this->coeffs()),
-    alphacPtr_(lookupAlphac(mesh, this->coeffs()))
+    alphacPtr_(lookupAlphac(mesh, this->coeffs())),
+    polydisperse_(Law::gasFraction ? this->coeffs() : dictionary::null)
 {
     wordList valid(MppicDragForce<CloudType>::keywords);
     valid.append(Law::keywords);
     if (Law::gasFraction)
     {
         valid.append("alphac");
+        valid.append(polydisperseCorrection::keyword);
     }
     mppicCoefficients::checkKeywords(this->coeffs(), valid, typeName);
 }
@@ -79,7 +81,30 @@ Foam::scalar Foam::CorrelationDragForce<CloudType, Law>::Sp
     s.rhog = td.rhoc();
     s.mug = muc;
 
+    if (polydisperse_.active())
+    {
+        const scalar scale = polydisperse_.toMeanDiameter(s, p.cell());
+        return scale*law_.Sp(s);
+    }
     return law_.Sp(s);
+}
+
+
+template<class CloudType, class Law>
+void Foam::CorrelationDragForce<CloudType, Law>::cacheFields(const bool store)
+{
+    MppicDragForce<CloudType>::cacheFields(store);
+
+    if (!store || !polydisperse_.active())
+    {
+        return;
+    }
+
+    polydisperse_.reset(this->mesh().nCells());
+    for (const typename CloudType::parcelType& p : this->owner())
+    {
+        polydisperse_.add(p.cell(), p.nParticle(), p.d());
+    }
 }
 
 

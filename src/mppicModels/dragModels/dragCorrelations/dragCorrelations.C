@@ -87,6 +87,13 @@ scalar hillKochLaddFit
     return (1 - w)*dilute + w*dense;
 }
 
+
+// Beetstra et al.'s polydisperse f(y) = ag*y + phi*y^2 + 0.064*ag*y^3
+scalar beetstraF(const scalar alphag, const scalar y)
+{
+    return y*(alphag + y*((1 - alphag) + 0.064*alphag*y));
+}
+
 } // End anonymous namespace
 } // End namespace dragCorrelations
 } // End namespace Foam
@@ -208,6 +215,16 @@ Foam::scalar Foam::dragCorrelations::constantCdK
 )
 {
     return 0.75*Cd*s.rhog*s.slip/s.d;
+}
+
+
+Foam::scalar Foam::dragCorrelations::beetstraPolydisperseScale
+(
+    const scalar alphag,
+    const scalar y
+)
+{
+    return beetstraF(alphag, y)/(beetstraF(alphag, 1)*sqr(y));
 }
 
 
