@@ -22,36 +22,32 @@ rm -rf "$prepared"/0.0*
 
 status=0
 
-# brokenSeeding <name> <sed expression> <texts...>
-brokenSeeding()
+# broken <name> <file> <application> <sed expression> <texts...>: a copy of
+# the prepared case with <file> edited, run with <application>: exit status
+# 1, a FatalIOError with the texts, and (the solver) no time step begun
+broken()
 {
-    local name="$1" expression="$2"
-    shift 2
+    local name="$1" file="$2" application="$3" expression="$4"
+    shift 4
     local dir="$runDir/$name"
     rm -rf "$dir"
     cp -r "$prepared" "$dir"
-    sed -i "$expression" "$dir/system/mppicSeedParcelsDict"
+    sed -i "$expression" "$dir/$file"
     echo "== $name"
-    runBroken "$dir" mppicSeedParcels > /dev/null
-    sed -n '/FOAM FATAL/,/^$/p' "$dir/log.broken" | sed -n 1,5p
-    check fatal "$dir/log.broken" $rc "$@" || status=1
-    [ "$rc" = 1 ] || { echo "FAIL exit status $rc, not 1"; status=1; }
-}
-
-# brokenCloud <name> <sed expression> <texts...>
-brokenCloud()
-{
-    local name="$1" expression="$2"
-    shift 2
-    local dir="$runDir/$name"
-    rm -rf "$dir"
-    cp -r "$prepared" "$dir"
-    sed -i "$expression" "$dir/constant/kinematicCloudProperties"
-    echo "== $name"
-    runBroken "$dir" mppicPimpleFoam > /dev/null
+    runBroken "$dir" "$application" > /dev/null
     sed -n '/FOAM FATAL/,/^$/p' "$dir/log.broken" | sed -n 1,5p
     check fatal "$dir/log.broken" $rc "$@" || status=1
     stoppedBeforeFirstStep "$dir/log.broken" $rc || status=1
+}
+
+brokenSeeding()
+{
+    broken "$1" system/mppicSeedParcelsDict mppicSeedParcels "${@:2}"
+}
+
+brokenCloud()
+{
+    broken "$1" constant/kinematicCloudProperties mppicPimpleFoam "${@:2}"
 }
 
 brokenSeeding fractionsSum \

@@ -31,7 +31,8 @@ Prints the fronts; --check: exit 1 unless every front is within 2 % of its
 exact height or 0.005 m, whichever is larger, each phase's mass is kept to
 1e-12 (postProcessing/packingMonitor/0/phases.dat) and no cell exceeds
 close pack (packingMonitor.dat); --plot: bidisperseSedimentation_<t>.png;
---record FILE: the validation matrix's record (case bidisperseSedimentation).
+--record FILE: the validation matrix's record (case bidisperseSedimentation):
+the fronts at 1 s and at --time, the masses and the bound.
 """
 import math
 import os
@@ -160,7 +161,26 @@ def summary(case, time):
                 equilibrium=exact.fronts(float(time), **params))
 
 
-def record_rows(res, time):
+def record_rows(results):
+    """The fronts at each time of results ((time, summary) pairs), then each
+    phase's mass and the bound of the last."""
+    rows = []
+    for time, res in results:
+        rows += front_rows(res, time)
+    res = results[-1][1]
+    for phase, (m0, m1) in sorted(res["masses"].items()):
+        rows.append(record.row(
+            "phase %d mass change, relative" % phase, abs(m1/m0 - 1),
+            reference=0, reference_source="mass conservation",
+            goal=record.at_most(1e-12)))
+    rows.append(record.row(
+        "cells above close pack (most at one step)", res["above"],
+        reference=0, reference_source="the capacity limit",
+        goal=record.at_most(0)))
+    return rows
+
+
+def front_rows(res, time):
     rows = []
     for name in FRONTS:
         exact_y = res["ref"][name]
@@ -172,15 +192,6 @@ def record_rows(res, time):
             goal=record.within(tolerance(exact_y), absolute=True),
             note="at equilibrium slip from t = 0: %.4f m"
             % res["equilibrium"][name]))
-    for phase, (m0, m1) in sorted(res["masses"].items()):
-        rows.append(record.row(
-            "phase %d mass change, relative" % phase, abs(m1/m0 - 1),
-            reference=0, reference_source="mass conservation",
-            goal=record.at_most(1e-12)))
-    rows.append(record.row(
-        "cells above close pack (most at one step)", res["above"],
-        reference=0, reference_source="the capacity limit",
-        goal=record.at_most(0)))
     return rows
 
 
@@ -243,8 +254,11 @@ def main():
         plot(res, args.time, os.path.join(args.case, png))
         print("wrote " + os.path.join(args.case, png))
     if args.record:
+        times = sorted(set(["1", args.time]), key=float)
         record.write(args.record, "bidisperseSedimentation",
-                     record_rows(res, args.time),
+                     record_rows([(t, res if t == args.time
+                                   else summary(args.case, t))
+                                  for t in times]),
                      plots=[png] if args.plot else [],
                      settings=record.case_settings(args.case))
     if args.check and not ok:

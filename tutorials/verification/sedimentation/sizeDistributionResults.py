@@ -7,7 +7,8 @@ Usage:
     sizeDistributionResults.py --volume-diameter FILE
 
 Reads the parcels (d, nParticle, rho, coordinates) of the first written time
-that holds them and of the latest, 0/V and 0/C (cell volumes, centres) and
+that holds them and of the latest, 0/V and <latest>/C (cell volumes,
+centres) and
 postProcessing/packingMonitor/0/packingMonitor.dat (every step). Prints:
   - per size class (20-60, 60-100, 100-140, 140-180 um): parcels, mass [kg],
     its share of the cloud's mass and its mass-weighted mean height [m], at
@@ -65,6 +66,12 @@ def volume_diameter(path):
     return (np.trapz(weight*d**3, d)/np.trapz(weight, d))**(1/3)
 
 
+def cell_centres(case):
+    """The cell centres (written at the latest time by Allrun)."""
+    return np.array(post.internal_field(
+        os.path.join(case, post.latest_time(case), "C")))
+
+
 def parcels(case, time):
     """Diameter, mass, height and cell of each parcel at a written time."""
     folder = os.path.join(case, time, "lagrangian", "kinematicCloud")
@@ -72,7 +79,7 @@ def parcels(case, time):
     n = np.array(post.lagrangian_field(os.path.join(folder, "nParticle")))[:, 0]
     rho = np.array(post.lagrangian_field(os.path.join(folder, "rho")))[:, 0]
     cells, volume, _ = post.parcel_cells_volumes(case, time)
-    centres = np.array(post.internal_field(os.path.join(case, "0", "C")))
+    centres = cell_centres(case)
     return dict(d=d, mass=n*rho*math.pi/6*d**3, y=centres[cells, 1],
                 cells=cells, volume=volume)
 
@@ -119,7 +126,7 @@ def class_profiles(case, time, close_pack):
     p = parcels(case, time)
     volumes = np.asarray(post.internal_field(os.path.join(case, "0", "V")),
                          dtype=float)
-    centres = post.internal_field(os.path.join(case, "0", "C"))
+    centres = cell_centres(case)
     out = []
     for lo, hi in zip(EDGES[:-1], EDGES[1:]):
         m = (p["d"] >= lo) & (p["d"] < hi)
