@@ -22,7 +22,8 @@ postProcessing/packingMonitor/0/packingMonitor.dat (every step). Prints:
   - the bed height (the row mean falling through alpha_cp/2) against the
     inventory height m/(rho_p alpha_cp A).
 --check: exit 1 unless the bound holds at every step and at every written
-time and each class keeps its mass to 1e-12. --plot: sizeDistribution.png
+time and each class keeps its mass to 1e-12. --plot:
+sizeDistribution_<packing model>.png
 (each class's layer-mean solids fraction at the end). --record FILE: the
 validation matrix's record (case sizeDistribution-<packing model>).
 --volume-diameter FILE: the volume mean diameter (E[d^3])^(1/3) of the
@@ -221,15 +222,16 @@ def main():
     print("bed height %.4f m, inventory height %.4f m (%+.1f %%)" % (
         res["height"], res["expected"],
         100*(res["height"]/res["expected"] - 1)))
+    model = post.dict_entry(os.path.join(
+        args.case, "constant", "kinematicCloudProperties"), "packingModel")
+    png = "sizeDistribution_%s.png" % model
     if args.plot:
-        plot(args.case, res, os.path.join(args.case, "sizeDistribution.png"))
-        print("wrote " + os.path.join(args.case, "sizeDistribution.png"))
+        plot(args.case, res, os.path.join(args.case, png))
+        print("wrote " + os.path.join(args.case, png))
     if args.record:
-        model = post.dict_entry(os.path.join(
-            args.case, "constant", "kinematicCloudProperties"), "packingModel")
         record.write(args.record, "sizeDistribution-%s" % model,
                      record_rows(res),
-                     plots=["sizeDistribution.png"] if args.plot else [],
+                     plots=[png] if args.plot else [],
                      settings=record.case_settings(args.case))
     ok = (res["max_cell"] <= res["bound"]
           and res["written"]["cellsAbove"] == 0
