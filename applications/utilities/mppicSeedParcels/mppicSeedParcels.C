@@ -185,8 +185,6 @@ int main(int argc, char *argv[])
 
     const boolList inRegion(regionCells(mesh, dict));
 
-    // Full precision: nParticle sets the seeded solids volume
-    IOstream::defaultPrecision(max(IOstream::defaultPrecision(), 15u));
     IOdictionary summary
     (
         IOobject
@@ -288,6 +286,9 @@ int main(int argc, char *argv[])
             << solidsVolume << " m3" << nl;
     }
 
+    // Full precision: nParticle sets the seeded solids volume (the
+    // positions keep the default precision)
+    IOstream::defaultPrecision(max(IOstream::defaultPrecision(), 15u));
     summary.regIOobject::write();
     Info<< "Wrote constant/seededParcels" << nl << "End" << endl;
 
