@@ -153,10 +153,8 @@ def met_text(met):
 def case_section(project, case, record, folder):
     lines = ["## %s" % case["title"], ""]
     if record is None:
-        lines += ["Not yet run by the matrix: `bin/validate %s`%s. Earlier "
-                  "figures of this case, from set-ups the shipped commands do "
-                  "not all reproduce, are in this file's history (git log)."
-                  % (case["name"], " (hours: in pieces)"
+        lines += ["Not yet run by the matrix: `bin/validate %s`%s."
+                  % (case["name"], " (a long case: hours)"
                      if case["length"] == "long" else ""), ""]
         return lines
     commit = record["commit"] + (" (with uncommitted changes)"
