@@ -8,6 +8,7 @@
 #     - a phase's diameter 0 (range (0, inf));
 #     - a phase that places no parcel (statisticalWeight 1e12);
 #     - a misspelt keyword in a phase (diametr);
+#     - mixing stirred (mixed or layered); layerDirection (0 0 0);
 #   mppicPimpleFoam (constant/kinematicCloudProperties, before the first step):
 #     - a phase's density rho -2000 (range (0, inf));
 #     - a phase index 0 (range [1, inf)) and 1.5 (an integer);
@@ -59,6 +60,12 @@ brokenSeeding zeroDiameter \
 brokenSeeding phaseWithoutParcels \
     '/small/,/}/s/^\( *parcelsPerCell\) .*/    statisticalWeight 1e12;/' \
     "phases.small" "no parcel placed"
+brokenSeeding unknownMixing \
+    's/^mixing .*/mixing          stirred;/' \
+    "keyword mixing" "stirred" "mixed" "layered"
+brokenSeeding zeroLayerDirection \
+    's/^mixing .*/mixing          layered;\nlayerDirection  (0 0 0);/' \
+    "keyword layerDirection" "(0 0 0)" "must not be zero"
 brokenSeeding misspeltKeyword \
     '/small/,/}/s/^\( *\)diameter /\1diametr /' \
     "unknown keyword diametr" "volumeFraction"

@@ -26,16 +26,8 @@ Readers (OpenFOAM ascii output of a case folder):
     profile_crossing(ys, profile, level, from_top)
                                        where a profile falls through a level
 
-Statistics (mppicStatistics.py, re-exported here):
-    percentile(values, q)              linear between order statistics
-    mean_and_error(series, block)      mean, std and the standard error of
-                                       the mean from block means
-    block_means(series, width)         (mid-time, mean) of a [(t, v)] series
-                                       in consecutive blocks of width s
-    interpolate(xs, ys, x)             linear, None outside [xs[0], xs[-1]]
-    window_mean(pairs, t0, t1)         mean of [(t, v)] over t0 <= t <= t1
-    fit_line(points)                   least-squares slope and intercept
-    fit_through_origin(points)         least-squares slope of y = a*x
+Statistics: mppicStatistics.py (percentile, mean_and_error, block_means,
+interpolate, window_mean, fit_line, fit_through_origin), re-exported here.
 
 A bed's vertical momentum budget over a window (packingMonitor's columns):
     packing_force(rows, mass)          the packing step's mean upward force
