@@ -6,30 +6,6 @@
 #include "PhaseInjection.H"
 #include "boundedCoefficient.H"
 
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-template<class CloudType, template<class> class Injection>
-Foam::label Foam::PhaseInjection<CloudType, Injection>::readPhase
-(
-    const dictionary& coeffs
-)
-{
-    const scalar phase =
-        mppicCoefficients::read
-        (
-            coeffs, "phase", mppicCoefficients::bounds::atLeast(1)
-        );
-    if (phase != label(phase))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Dictionary " << coeffs.name() << ", keyword phase: "
-            << "value " << phase << " must be an integer, at least 1"
-            << exit(FatalIOError);
-    }
-    return label(phase);
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType, template<class> class Injection>
@@ -41,7 +17,16 @@ Foam::PhaseInjection<CloudType, Injection>::PhaseInjection
 )
 :
     Injection<CloudType>(dict, owner, modelName),
-    phase_(readPhase(this->coeffDict())),
+    phase_
+    (
+        label
+        (
+            mppicCoefficients::read
+            (
+                this->coeffDict(), "phase", mppicCoefficients::bounds::atLeast(1)
+            )
+        )
+    ),
     rho_
     (
         mppicCoefficients::read
@@ -53,6 +38,15 @@ Foam::PhaseInjection<CloudType, Injection>::PhaseInjection
         )
     )
 {
+    const scalar phase = this->coeffDict().template get<scalar>("phase");
+    if (phase != phase_)
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "Dictionary " << this->coeffDict().name() << ", keyword phase: "
+            << "value " << phase << " must be an integer, at least 1"
+            << exit(FatalIOError);
+    }
+
     // OpenFOAM gives each injected parcel the injector's ID as its typeId
     // (keyword injectorID): the phase's index, or the same value
     if (this->injectorID_ != -1 && this->injectorID_ != phase_)
