@@ -28,6 +28,11 @@ and prints, over t0 <= t <= end (default t0: 0.4 x end, after the start-up):
       origId). A bubbling bed stirs its parcels by centimetres per second;
       a bed that does not bubble (a static, layered packing) by a few
       millimetres;
+    - the bubbles (uniformFluidizationBubbles.py) where the run sampled
+      them (postProcessing/bubbleSlices): void cells, bubble fraction
+      against two-phase theory, bubble sizes and rise velocities, the bed
+      height and its fluctuation, the pressure signal's fluctuation and
+      dominant frequency;
     - with --rows, per row of cells over the window's written times: the
       mean solids fraction, the share of cells at close pack, the packing
       step's force on the row over the bed's weight (the packingForce field
@@ -40,7 +45,8 @@ Usage:
         [--plot] [--record FILE]
     --row   one markdown table row (TABLE_HEAD; bin/compareSolvers)
     --plot  uniformFluidization_<label>_pressureDrop.png: deltaP/weight(t);
-            with --rows also uniformFluidization_<label>_rows.png
+            with --rows also uniformFluidization_<label>_rows.png; with
+            the bubble samples also _bubbles.png and _snapshots.png
     --record FILE  the validation matrix's record (tutorials/lib/
             validationRecord.py) of case uniformBed-<N>, N the parcels per
             packed cell of system/mppicSeedParcelsDict: deltaP/weight
@@ -67,6 +73,7 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 "tutorials", "lib"))
 import mppicPost as post  # noqa: E402 (tutorials/lib)
 import validationRecord as record  # noqa: E402 (tutorials/lib)
+import uniformFluidizationBubbles as bubbles  # noqa: E402 (beside this file)
 
 # MFiX-PIC 21.3.2 on this bed, mean deltaP/weight over 1-4 s: the project's
 # shared reference/mfix_pic_uniform_bed.csv, deltaP_over_weight_mean (no copy
@@ -271,8 +278,9 @@ def run_settings(case):
     return model, close_pack, per_cell, parcel, text
 
 
-def write_record(path, res, case, plots):
-    """The validation matrix's record of the run (validationRecord)."""
+def write_record(path, res, case, plots, extra=()):
+    """The validation matrix's record of the run (validationRecord), with
+    the extra rows (the bubbles')."""
     _, close_pack, per_cell, parcel, settings = run_settings(case)
     bound = max(1.03*close_pack, close_pack + parcel)
     rows = [
@@ -293,7 +301,7 @@ def write_record(path, res, case, plots):
                    goal=record.at_most(bound + 1e-12),
                    note="over the window; the model's field at most %.4f at "
                    "every step" % res["maxField"]),
-    ]
+    ] + list(extra)
     record.write(path, "uniformBed-%d" % per_cell, rows, plots=plots,
                  settings=settings,
                  window="%g-%g s" % (res["t0"], res["t1"]))
@@ -341,6 +349,10 @@ def main():
             print("%s: the parcels moved a median %.1f mm/s between %g and "
                   "%g s" % (args.label, 1e3*res["travel"][2],
                             res["travel"][0], res["travel"][1]))
+    bubbly = None if args.row else bubbles.summary(args.case, res["t0"],
+                                                    res["t1"])
+    if bubbly:
+        print("\n".join(bubbles.lines(bubbly, args.label)))
     profile = rows(args.case, res["t0"], res["t1"]) if args.rows else None
     if args.rows and profile is None:
         print("%s: no written packingForce in the window (packingMonitor "
@@ -358,8 +370,11 @@ def main():
         if profile:
             plot_rows(profile, args.case, args.label, (res["t0"], res["t1"]))
             plots.append("uniformFluidization_%s_rows.png" % args.label)
+        if bubbly:
+            plots += bubbles.plots(bubbly, args.case, args.label)
     if args.record:
-        write_record(args.record, res, args.case, plots)
+        write_record(args.record, res, args.case, plots,
+                     bubbles.record_rows(bubbly) if bubbly else ())
     return 0
 
 
