@@ -1,7 +1,8 @@
 """The uniform bed's bubbles (tutorials/lib/mppicBubbles.py on the gas
 fraction that the function object bubbleSlices samples on the front and
-back walls every 0.05 s), for uniformFluidizationResults.py:
+back walls every 0.02 s), for uniformFluidizationResults.py:
 
+    two_phase_reference()    two-phase theory's bubble fraction
     summary(case, t0, t1)    the window's statistics (mppicBubbles.
                              bubble_statistics) with the pressure signal's
                              standard deviation and dominant frequency,
@@ -44,6 +45,13 @@ MFIX = {"expansion": 1.35, "heightStd": 0.007, "std": 0.080,
         "frequency": 4.3, "void": 0.055}
 
 
+def two_phase_reference():
+    """Two-phase theory's bubble fraction with Darton's diameter at half
+    the settled height."""
+    darton = float(bubbles.darton_diameter(U, UMF, 0.5*SETTLED))
+    return bubbles.two_phase_bubble_fraction(U, UMF, EPS_MF, darton)[0]
+
+
 def summary(case, t0, t1):
     folder = os.path.join(case, "postProcessing", "bubbleSlices")
     if not os.path.isdir(folder):
@@ -57,8 +65,7 @@ def summary(case, t0, t1):
     res["std"], _, _, res["frequency"] = bubbles.pressure_signal(
         [r[0] for r in rows], [(r[3] - r[4])/r[5] for r in rows])
     res["darton"] = float(bubbles.darton_diameter(U, UMF, 0.5*SETTLED))
-    res["twoPhase"] = bubbles.two_phase_bubble_fraction(
-        U, UMF, EPS_MF, res["darton"])[0]
+    res["twoPhase"] = two_phase_reference()
     res["t0"], res["t1"] = t0, t1
     res["snapshots"] = (xs, ys, times, eps)
     return res
