@@ -69,8 +69,7 @@ template<class CloudType>
 typename Foam::PackingModels::ColoringFunction<CloudType>::packState
 Foam::PackingModels::ColoringFunction<CloudType>::packFor
 (
-    const typename CloudType::parcelType& p,
-    const scalar deltaT
+    const typename CloudType::parcelType& p
 ) const
 {
     packState pack;
@@ -118,24 +117,9 @@ Foam::PackingModels::ColoringFunction<CloudType>::packFor
         }
     }
 
-    // The cell ahead: when close packed, the pack lies along the normal.
-    // The parcel meets it when it closes the gap to the face between them
-    // within the step, at its velocity relative to the pack; a parcel
-    // farther away keeps its velocity
+    // The cell ahead: when close packed, the pack lies along the normal
     const neighbourState ahead =
         this->neighbourAhead(p);
-
-    if
-    (
-        ahead.found
-     && ((p.U() - ahead.uMean) & ahead.normal)*deltaT < ahead.gap
-    )
-    {
-        pack.impulse = Zero;
-        pack.uMean = this->uMeanAt(p);
-        pack.cell = this->globalCell(p);
-        return pack;
-    }
 
     pack.impulse = -ahead.value*ahead.normal;
     pack.uMean = ahead.found ? ahead.uMean : this->uMeanAt(p);
@@ -218,7 +202,7 @@ velocityCorrection
     const scalar deltaT
 ) const
 {
-    const packState pack = packFor(p, deltaT);
+    const packState pack = packFor(p);
 
     vector correction =
         rules_.correctedVelocity

@@ -91,7 +91,6 @@ Foam::PackingModels::DensePackingModel<CloudType>::neighbourAhead
         return ahead;
     }
     ahead.normal = cellFaceGeometry::outwardNormal(mesh, celli, towardFace);
-    ahead.gap = (mesh.faceCentres()[towardFace] - p.position()) & ahead.normal;
 
     if (mesh.isInternalFace(towardFace))
     {
