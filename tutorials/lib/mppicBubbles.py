@@ -49,6 +49,8 @@ import os
 
 import numpy as np
 
+import mppicPost as post
+
 THRESHOLD = 0.8
 SURFACE_FRACTION = 0.1
 TOP_SHARE = 0.8
@@ -95,18 +97,14 @@ def read_slices(case, name="bubbleSlices", field="alpha.air", digits=7):
 
 def bed_heights(ys, eps, level):
     """Each time's bed height: the highest height where the row-mean solids
-    fraction 1 - eps falls through level (linear between rows); the top
-    row's height where no row falls through it."""
+    fraction 1 - eps (over the layers and columns) falls through level
+    (mppicPost.profile_crossing); the top row's height where no row falls
+    through it."""
     heights = []
     for frame in eps:
         solids = 1 - frame.reshape(-1, len(ys), frame.shape[-1]).mean(axis=(0, 2))
-        h = float(ys[-1])
-        for j in range(len(ys) - 2, -1, -1):
-            if solids[j] >= level > solids[j + 1]:
-                f = (solids[j] - level)/(solids[j] - solids[j + 1])
-                h = float(ys[j] + f*(ys[j + 1] - ys[j]))
-                break
-        heights.append(h)
+        h = post.profile_crossing(ys, solids, level, from_top=True)
+        heights.append(float(ys[-1]) if math.isnan(h) else h)
     return np.array(heights)
 
 

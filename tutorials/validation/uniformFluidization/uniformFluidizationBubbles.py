@@ -2,12 +2,16 @@
 fraction that the function object bubbleSlices samples on the front and
 back walls every 0.02 s), for uniformFluidizationResults.py:
 
-    two_phase_reference()    two-phase theory's bubble fraction
-    summary(case, t0, t1)    the window's statistics (mppicBubbles.
-                             bubble_statistics) with the pressure signal's
-                             standard deviation and dominant frequency,
-                             and the references; None without samples
-                             in the window
+    summary(case, t0, t1, series)
+                             the window's statistics (mppicBubbles.
+                             bubble_statistics) with the standard deviation
+                             and dominant frequency of the (t, deltaP/
+                             weight) series the results script read, and
+                             the references; None without samples in the
+                             window
+    DARTON, TWO_PHASE        the references: Darton's diameter at half the
+                             settled height, two-phase theory's bubble
+                             fraction with it
     lines(res)               what the results script prints
     record_rows(res)         the validation matrix's rows
     plots(res, case, label)  uniformFluidization_<label>_bubbles.png
@@ -24,7 +28,6 @@ References (no measured bubble data of this bed exist):
       its bed height over the settled 1.35 (std 0.007 m), deltaP/weight
       std 0.080 at 4.3 Hz, void cells 0.055 (below the bed height).
 """
-import math
 import os
 import sys
 
@@ -35,7 +38,6 @@ sys.path.insert(0, os.path.join(os.environ.get("MPPIC_PROJECT_DIR")
                                 or os.path.join(HERE, "..", "..", ".."),
                                 "tutorials", "lib"))
 import mppicBubbles as bubbles  # noqa: E402 (tutorials/lib)
-import mppicPost as post  # noqa: E402
 import validationRecord as record  # noqa: E402
 
 U, UMF, EPS_MF = 0.5, 0.213, 0.4
@@ -45,14 +47,11 @@ MFIX = {"expansion": 1.35, "heightStd": 0.007, "std": 0.080,
         "frequency": 4.3, "void": 0.055}
 
 
-def two_phase_reference():
-    """Two-phase theory's bubble fraction with Darton's diameter at half
-    the settled height."""
-    darton = float(bubbles.darton_diameter(U, UMF, 0.5*SETTLED))
-    return bubbles.two_phase_bubble_fraction(U, UMF, EPS_MF, darton)[0]
+DARTON = float(bubbles.darton_diameter(U, UMF, 0.5*SETTLED))
+TWO_PHASE = bubbles.two_phase_bubble_fraction(U, UMF, EPS_MF, DARTON)[0]
 
 
-def summary(case, t0, t1):
+def summary(case, t0, t1, series):
     folder = os.path.join(case, "postProcessing", "bubbleSlices")
     if not os.path.isdir(folder):
         return None
@@ -60,12 +59,10 @@ def summary(case, t0, t1):
     if not any(t0 - 1e-9 <= t <= t1 + 1e-9 for t in times):
         return None
     res = bubbles.bubble_statistics(times, xs, ys, eps, t0, t1)
-    rows = [r for r in post.function_object_table(case, "bedPressureDrop")
-            if t0 - 1e-12 <= r[0] <= t1 + 1e-12]
+    window = [(t, r) for t, r in series if t0 - 1e-12 <= t <= t1 + 1e-12]
     res["std"], _, _, res["frequency"] = bubbles.pressure_signal(
-        [r[0] for r in rows], [(r[3] - r[4])/r[5] for r in rows])
-    res["darton"] = float(bubbles.darton_diameter(U, UMF, 0.5*SETTLED))
-    res["twoPhase"] = two_phase_reference()
+        [t for t, _ in window], [r for _, r in window])
+    res["darton"], res["twoPhase"] = DARTON, TWO_PHASE
     res["t0"], res["t1"] = t0, t1
     res["snapshots"] = (xs, ys, times, eps)
     return res
@@ -109,10 +106,11 @@ def record_rows(res):
         record.row("bed height / settled", res["bedHeight"]/SETTLED,
                    peer=MFIX["expansion"],
                    note="where the row-mean solids fraction falls through "
-                   "0.1; std %.4f m (MFiX-PIC 0.007)" % res["bedHeightStd"]),
+                   "0.1; std %.4f m (MFiX-PIC %g)"
+                   % (res["bedHeightStd"], MFIX["heightStd"])),
         record.row("deltaP/weight std", res["std"], peer=MFIX["std"],
-                   note="dominant frequency %.2f Hz (MFiX-PIC 4.3 Hz)"
-                   % res["frequency"]),
+                   note="dominant frequency %.2f Hz (MFiX-PIC %g Hz)"
+                   % (res["frequency"], MFIX["frequency"])),
     ]
 
 

@@ -350,7 +350,7 @@ def main():
                   "%g s" % (args.label, 1e3*res["travel"][2],
                             res["travel"][0], res["travel"][1]))
     bubbly = None if args.row else bubbles.summary(args.case, res["t0"],
-                                                    res["t1"])
+                                                    res["t1"], res["series"])
     if bubbly:
         print("\n".join(bubbles.lines(bubbly, args.label)))
     profile = rows(args.case, res["t0"], res["t1"]) if args.rows else None
