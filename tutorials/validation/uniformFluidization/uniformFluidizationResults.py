@@ -294,6 +294,14 @@ def write_record(path, res, case, plots, extra=()):
                    res["error"] if math.isfinite(res["error"]) else None,
                    note="from the means of 0.25 s blocks (none: a window of "
                    "fewer than two blocks)"),
+        record.row("packing step's upward force/weight", res["packing"],
+                   note="what the packing rules carry; with the next row and "
+                   "the cloud's momentum change, the weight's share the gas "
+                   "pressure drop does not carry"),
+        record.row("rest of the momentum budget/weight", res["walls"],
+                   note="the distributor's rebounds and the drag the parcels "
+                   "got that the gas never gave (semi-implicit coupling, "
+                   "README)"),
         record.row("largest cell solids fraction", res["maxCell"],
                    reference=round(bound, 4),
                    reference_source="max(1.03 x %g, %g + one parcel %.4f)"
