@@ -289,7 +289,8 @@ def plot_diameters(path, runs, references=(), title=None, top=None):
                 color=colour, alpha=0.3)
         mids, means, counts = diameter_profile(bubbles, edges)
         ax.plot(mids, 1e3*means, "o-", color=colour,
-                label="%s (%d bubbles)" % (label, len(bubbles)))
+                label="%s (%d bubble%s)"
+                % (label, len(bubbles), "" if len(bubbles) == 1 else "s"))
     for n, (label, heights, diameters) in enumerate(references):
         ax.plot(heights, 1e3*np.asarray(diameters), "--", color="k",
                 alpha=1 - 0.3*n, label=label)

@@ -17,9 +17,10 @@ figure with a goal but no value (not found, nan) is recorded as not met.
 case_settings(case) gives the settings line of a cloud case from its files
 (the packing model and its coefficients, the deposit, the drag, the PIMPLE
 switches that are on, the seeding, the solver and the ranks).
-The run's commit, date, command and wall time come from bin/validate's
-environment (MPPIC_VALIDATE_COMMIT, _DIRTY, _COMMAND, _WALLTIME); a script
-run by hand records its own working tree's commit and "by hand".
+The run's commit, date (when the run ended), command and wall time come
+from bin/validate's environment (MPPIC_VALIDATE_COMMIT, _DIRTY, _DATE,
+_COMMAND, _WALLTIME); a script run by hand records its own working tree's
+commit, the present date and "by hand".
 """
 import datetime
 import json
@@ -198,7 +199,8 @@ def write(path, case, rows, plots=(), settings="", window=""):
                                         ":/src", ":/applications",
                                         ":/tutorials")
                          else "false") == "true",
-        "date": datetime.datetime.now(datetime.timezone.utc)
+        "date": env.get("MPPIC_VALIDATE_DATE")
+        or datetime.datetime.now(datetime.timezone.utc)
         .strftime("%Y-%m-%d %H:%M UTC"),
         "command": env.get("MPPIC_VALIDATE_COMMAND", "by hand"),
         "wallTime": int(float(wall)) if wall else None,
