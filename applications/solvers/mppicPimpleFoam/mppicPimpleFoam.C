@@ -97,9 +97,11 @@ Usage
     packed cell and the freeboard or a fixed-velocity inflow, or at the
     edge of a falling mixture, the face's resistance is that of its two
     half cells in series, 1/interpolate(A); MPPICFoam's interpolate(1/A)
-    adds their conductances as if in parallel. Off by default: MPPICFoam's
-    form. No MFiX equivalent (MFiX solves its momentum on a staggered
-    grid).
+    adds their conductances as if in parallel. A wall's face then carries
+    its half cell's H, which p's fixedFluxPressure condition balances as it
+    balances the body forces' flux (every shipped case has it on its
+    walls). Off by default: MPPICFoam's form. No MFiX equivalent (MFiX
+    solves its momentum on a staggered grid).
 
     The drag balance: with semi-implicit drag the gas takes the drag at its
     new velocity and the parcels took it at the old one; in beds whose
