@@ -6,8 +6,9 @@
 # case1a maybe -> FatalIOError naming the keyword (and the range), exit
 # status 1, no crash (mppicPimpleFoam); likewise capacityLimit perhaps and
 # solidsFractionFrom maybe (the message lists cell and averaging); the
-# solver's PIMPLE switches faceInterpolatedDrag maybe and
-# balanceImplicitDrag maybe, and balanceImplicitDrag true with the
+# solver's PIMPLE switches faceInterpolatedDrag maybe,
+# superficialFluxCoupling maybe and balanceImplicitDrag maybe, both face
+# coefficients true (at most one), and balanceImplicitDrag true with the
 # cloud's U coupled explicitly (nothing to balance: the error names the
 # keyword and semiImplicit).
 . "${0%/*}/badInputFunctions"
@@ -66,8 +67,20 @@ setEntry "$case" system/fvSolution PIMPLE/faceInterpolatedDrag maybe
 runBroken "$case" mppicPimpleFoam
 check fatal "$case/log.broken" $rc "faceInterpolatedDrag" "maybe" || status=1
 
+setEntry "$case" system/fvSolution PIMPLE/faceInterpolatedDrag true
+setEntry "$case" system/fvSolution PIMPLE/superficialFluxCoupling true
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "faceInterpolatedDrag" \
+    "superficialFluxCoupling" "at most one" || status=1
+
 foamDictionary "$case/system/fvSolution" \
     -entry PIMPLE/faceInterpolatedDrag -remove > /dev/null
+setEntry "$case" system/fvSolution PIMPLE/superficialFluxCoupling maybe
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "superficialFluxCoupling" "maybe" || status=1
+
+foamDictionary "$case/system/fvSolution" \
+    -entry PIMPLE/superficialFluxCoupling -remove > /dev/null
 setEntry "$case" system/fvSolution PIMPLE/balanceImplicitDrag maybe
 runBroken "$case" mppicPimpleFoam
 check fatal "$case/log.broken" $rc "balanceImplicitDrag" "maybe" || status=1

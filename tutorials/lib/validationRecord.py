@@ -102,7 +102,9 @@ def coeffs_text(path, block):
 
 
 # mppicPimpleFoam's PIMPLE keywords and their defaults (mppicPimpleFoam.C)
-PIMPLE_SWITCHES = (("faceInterpolatedDrag", False), ("balanceImplicitDrag", False))
+PIMPLE_SWITCHES = (("faceInterpolatedDrag", False),
+                   ("superficialFluxCoupling", False),
+                   ("balanceImplicitDrag", False))
 
 
 def add_record_argument(parser):

@@ -86,6 +86,15 @@ Usage
                                cells' drag in series), instead of
                                MPPICFoam's interpolate(1/A),
                                interpolate(H/A)                  | false
+        superficialFluxCoupling | the superficial flux ag phi with the
+                               face coefficient of its two half cells
+                               in series, 1/(ag_f interpolate(A/ag)),
+                               H and the forces interpolated
+                               alongside, and the cell velocity the
+                               parcels see rebuilt from that flux
+                               over the cell's gas fraction; at most
+                               one of it and faceInterpolatedDrag
+                               true, else a FatalIOError         | false
         balanceImplicitDrag  | after the gas solution the parcels get the
                                drag the gas got: each cell's parcels gain
                                UCoeff (U_g,new - U_g,old) over their mass
@@ -102,6 +111,20 @@ Usage
     balances the body forces' flux (every shipped case has it on its
     walls). Off by default: MPPICFoam's form. No MFiX equivalent (MFiX
     solves its momentum on a staggered grid).
+
+    The superficial-flux coupling: in a cell the gas's momentum balance
+    gives its superficial velocity ag U = (H + F - grad p) ag/A, so the
+    resistance per superficial velocity is A/ag and a face's is that of
+    its two half cells in series, interpolate(A/ag). The cell velocity is
+    rebuilt from the superficial face flux, U = reconstruct(ag_f phi)/ag.
+    At a jump of the gas fraction (the top row of a packed bed, a
+    bubble's edge) MPPICFoam's rebuild HbyA + rAU reconstruct(face
+    forces) mixes the bed's 1/A with the freeboard's pressure gradient:
+    the top row of a packed bed under a rising gas sees about half its
+    interstitial velocity and the row above too much. With the coupling,
+    the gas's pressure drop over a fixed bed is the drag its parcels get,
+    row by row. Off by default (tests/regression/superficialFluxCoupling
+    measures both); no MFiX equivalent.
 
     The drag balance: with semi-implicit drag the gas takes the drag at its
     new velocity and the parcels took it at the old one; in beds whose
