@@ -1,7 +1,11 @@
 #!/usr/bin/python3
 """The table of bubbleCauses: for each variant run in DIR/<name> (the
 order given), over t0 to the run's end, the time-mean deltaP/weight with
-its standard error, the largest cell solids fraction, the bubbles
+its standard error, the shares of the weight the packing step carries
+and the rest (uniformFluidizationResults.summary: the cloud's momentum
+change less the gas's and the packing step's shares, i.e. the
+distributor's rebounds and, without the drag balance, the drag the gas
+does not see), the largest cell solids fraction, the bubbles
 (uniformFluidizationBubbles.py: void cells, the bubble fraction in bubbles
 of 3 cells or more, bubbles a picture, their mean and largest diameter),
 the bed height over the settled 0.12 m, the pressure signal's standard
@@ -22,11 +26,11 @@ import uniformFluidizationResults as results  # noqa: E402 (beside this file)
 import uniformFluidizationBubbles as bubbles  # noqa: E402
 import validationRecord as record  # noqa: E402 (tutorials/lib, on the path)
 
-HEAD = ("| variant | deltaP/weight (std error) | max cell eps_s | void cells "
-        "| bubble fraction | bubbles a picture | mean D [mm] | largest D [mm] "
+HEAD = ("| variant | deltaP/weight (std error) | packing step/weight "
+        "| rest/weight | max cell eps_s | void cells | bubble fraction | bubbles a picture | mean D [mm] | largest D [mm] "
         "| bed height / settled | deltaP/weight std | frequency [Hz] "
         "| parcel travel [mm/s] |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|")
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 
 
 def row(name, case, t0):
@@ -42,9 +46,11 @@ def row(name, case, t0):
     if bub is None:
         return None
     travel = res["travel"][2]*1e3 if res["travel"] else float("nan")
-    return ("| %s | %.3f (%.3f) | %.3f | %.3f | %.3f | %.2f | %.1f | %.1f "
-            "| %.2f | %.3f | %.2f | %.1f |"
-            % (name, res["ratio"], res["error"], res["maxCell"],
+    rest = res["walls"] if res["walls"] is not None else float("nan")
+    return ("| %s | %.3f (%.3f) | %.3f | %.3f | %.3f | %.3f | %.3f | %.2f "
+            "| %.1f | %.1f | %.2f | %.3f | %.2f | %.1f |"
+            % (name, res["ratio"], res["error"], res["packing"], rest,
+               res["maxCell"],
                bub["voidFraction"], bub["bubbleFraction"],
                bub["bubblesPerFrame"], 1e3*bub["meanDiameter"],
                1e3*bub["largest"], bub["bedHeight"]/bubbles.SETTLED,
@@ -80,7 +86,11 @@ def main():
         "%g s to the run's end. Bubbles: gas fraction > 0.8 below 0.8 of "
         "the bed height at the front and back walls every 0.02 s; the "
         "bubble fraction counts bubbles of 3 cells or more (two-phase "
-        "theory: %.2f; a bubbling bed: at least %.2f). The variants are "
+        "theory: %.2f; a bubbling bed: at least %.2f). The shares of the "
+        "weight: the gas's (deltaP/weight), the packing step's net upward "
+        "force, and the rest, what neither carries with the bed's momentum "
+        "change counted: the distributor's rebounds and, without the drag "
+        "balance, the drag the gas does not see. The variants are "
         "described in the script's header."
         % (datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M"),
            commit(),
