@@ -123,8 +123,11 @@ Usage
     the top row of a packed bed under a rising gas sees about half its
     interstitial velocity and the row above too much. With the coupling,
     the gas's pressure drop over a fixed bed is the drag its parcels get,
-    row by row. Off by default (tests/regression/superficialFluxCoupling
-    measures both); no MFiX equivalent.
+    row by row. Off by default: with it a Rayleigh-Taylor mixing layer of
+    particles grows ten times too fast and a settling front lags
+    (docs/VALIDATION.md, the options the defaults leave off);
+    tests/regression/superficialFluxCoupling measures both couplings on a
+    fixed bed. No MFiX equivalent.
 
     The drag balance: with semi-implicit drag the gas takes the drag at its
     new velocity and the parcels took it at the old one; in beds whose
