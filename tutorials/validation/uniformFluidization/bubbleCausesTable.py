@@ -27,7 +27,8 @@ import uniformFluidizationBubbles as bubbles  # noqa: E402
 import validationRecord as record  # noqa: E402 (tutorials/lib, on the path)
 
 HEAD = ("| variant | deltaP/weight (std error) | packing step/weight "
-        "| rest/weight | max cell eps_s | void cells | bubble fraction | bubbles a picture | mean D [mm] | largest D [mm] "
+        "| rest/weight | max cell eps_s | void cells | bubble fraction "
+        "| bubbles a picture | mean D [mm] | largest D [mm] "
         "| bed height / settled | deltaP/weight std | frequency [Hz] "
         "| parcel travel [mm/s] |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
