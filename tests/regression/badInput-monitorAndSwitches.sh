@@ -10,7 +10,9 @@
 # superficialFluxCoupling maybe and balanceImplicitDrag maybe, both face
 # coefficients true (at most one), and balanceImplicitDrag true with the
 # cloud's U coupled explicitly (nothing to balance: the error names the
-# keyword and semiImplicit).
+# keyword and semiImplicit); a misspelt PIMPLE keyword,
+# superficialFluxCoupeling (the message lists the valid keywords, the
+# solver's own and pimpleControl's; stopped before the first step).
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
 prepareCase "$runDir/case"
@@ -90,5 +92,13 @@ setEntry "$case" constant/kinematicCloudProperties \
     solution/sourceTerms/schemes/U "explicit 1"
 runBroken "$case" mppicPimpleFoam
 check fatal "$case/log.broken" $rc "balanceImplicitDrag" "semiImplicit" || status=1
+
+foamDictionary "$case/system/fvSolution" \
+    -entry PIMPLE/balanceImplicitDrag -remove > /dev/null
+setEntry "$case" system/fvSolution PIMPLE/superficialFluxCoupeling true
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "unknown keyword superficialFluxCoupeling" \
+    "superficialFluxCoupling" "nOuterCorrectors" || status=1
+stoppedBeforeFirstStep "$case/log.broken" $rc || status=1
 
 exit $status

@@ -10,7 +10,9 @@
 #   droplet diameter -2e-4 (range (0, inf); OpenFOAM ran on, exit 0) and
 #   averagingMethod basci (OpenFOAM aborted in the first step, exit 134),
 #   both stopped before the first step with exit status 1;
-#   system/controlDict: reactingCloudBalance species (H2X), cloud noCloud.
+#   system/controlDict: reactingCloudBalance species (H2X), cloud noCloud;
+#   system/fvSolution: PIMPLE nCorector (misspelt; the message lists the
+#   valid keywords), stopped before the first step.
 #------------------------------------------------------------------------------
 runDir="${1:?usage: badInput-reacting.sh <runDir>}"
 . "${0%/*}/badInputFunctions"
@@ -67,5 +69,8 @@ breakAndRun balanceSpecies ../system/controlDict functions/balance/species \
     "(H2X)" "species" "H2X"
 breakAndRun balanceCloud ../system/controlDict functions/balance/cloud \
     noCloud "keyword cloud" "noCloud"
+breakAndRun pimpleMisspelt ../system/fvSolution PIMPLE/nCorector 2 \
+    "unknown keyword nCorector" "nCorrectors" "momentumPredictor"
+stoppedBeforeFirstStep "$runDir/pimpleMisspelt/log.broken" $rc || status=1
 
 exit $status

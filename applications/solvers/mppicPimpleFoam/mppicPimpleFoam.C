@@ -77,7 +77,9 @@ Usage
     constantProperties/alphaMax), constant/turbulenceProperties.<name>,
     constant/g, 0/U.<name>, 0/p and system/fvSolution PIMPLE.
 
-    PIMPLE keywords of its own (the rest are pimpleControl's):
+    PIMPLE keywords of its own (the rest are pimpleControl's and
+    setRefCell's; any other keyword, a misspelling, stops with a
+    FatalIOError listing the valid ones):
     \table
         Keyword              | Meaning                           | Default
         faceInterpolatedDrag | face coefficient of the pressure equation
@@ -153,6 +155,7 @@ Usage
 #include "gasMassSources.H"
 #include "newCloudOrExit.H"
 #include "cloudInputChecks.H"
+#include "boundedCoefficient.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -173,6 +176,12 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
     #include "createControl.H"
+    const wordList solverPimpleKeywords
+    ({
+        "faceInterpolatedDrag", "superficialFluxCoupling",
+        "balanceImplicitDrag"
+    });
+    #include "checkPimpleKeywords.H"
     #include "createTimeControls.H"
     #include "createFields.H"
     #include "createPackingMonitor.H"

@@ -64,7 +64,9 @@ Usage
     reactingCloud; OpenFOAM's reacting-cloud dictionary with the MPPIC
     submodels and constantProperties/alphaMax; libmppicModels'
     solidsFractionFrom and solidsSubCycling), constant/g, 0/U, 0/p, 0/T,
-    0/<specie> and system/fvSolution PIMPLE. Writes U, p, T, the species,
+    0/<specie> and system/fvSolution PIMPLE (pimpleControl's and
+    setRefCell's keywords only: any other, a misspelling, stops with a
+    FatalIOError listing the valid ones). Writes U, p, T, the species,
     rho, alpha.gas (gas fraction) and alpha.<cloud> (solids fraction).
     \table
         Entry        | Meaning                               | Default
@@ -90,6 +92,7 @@ Usage
 #include "reconstructFlux.H"
 #include "newCloudOrExit.H"
 #include "cloudInputChecks.H"
+#include "boundedCoefficient.H"
 #include "multivariateScheme.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -111,6 +114,8 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
     #include "createControl.H"
+    const wordList solverPimpleKeywords(0);
+    #include "checkPimpleKeywords.H"
     #include "createTimeControls.H"
     #include "createFields.H"
     #include "createPackingMonitor.H"
