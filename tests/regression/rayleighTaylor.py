@@ -17,7 +17,10 @@ Table 6 for rho_p 7), by hand:
     averaged solids fraction crosses 5 % and 95 % of 0.2), fitted over at
     least 3 instants, above 0.03, 0.6 x the band's lower edge (a coupling
     that lets the gas through the mixture, or a mixture that does not fall,
-    gives less);
+    gives less), and below 0.1, 1.4 x its upper edge (a mixture that falls
+    nearly unresisted gives more: 0.3 on the 2.5 mm slice with an earlier
+    form of PIMPLE superficialFluxCoupling, whose cell velocity carried
+    the face flux's time-derivative correction);
   - 9600 parcels at the end (nothing leaves: the outlet is a wall for the
     parcels).
 Printed, not asserted: the fit's RMS residual, and alpha and
@@ -26,7 +29,13 @@ defaults this coarse slice falls short (measured alpha 0.040, h(0.7 s)
 0.029 x A g t^2, residual 0.19 of the mean h); the band on the seed's
 2.5 mm slice over 1.2 s is the validation matrix's.
 
-Usage: rayleighTaylor.py   (in the case)
+The test's second case has PIMPLE superficialFluxCoupling true and the
+lower bound 0.02 (--lower): that coupling's cell velocity keeps a fourth-
+order part of the faces' smoothing, which weighs more on this coarse
+slice (measured alpha 0.026 here, 0.029 on the 2.5 mm slice where the
+defaults give 0.032).
+
+Usage: rayleighTaylor.py [--lower L]   (in the case; L default 0.03)
 """
 import re
 import sys
@@ -45,16 +54,17 @@ def check_atwood_number_and_rows(res):
     check(abs(res["cell"] - 0.005) < 1e-9, "rows 0.005 m apart")
 
 
-def check_layer_grows(res):
-    """alpha above 0.03; the fit's residual and the GOAL lines printed."""
+def check_layer_grows(res, lower):
+    """alpha between lower and 0.1; the fit's residual and the GOAL lines
+    printed."""
     alpha = res.get("alpha", float("nan"))
     t0, t1 = res.get("range", (0, -1))
     fitted = [(t, h) for t, h, _, _ in res["series"] if t0 - 1e-9 <= t <= t1 + 1e-9]
     residual = (sum((h - alpha*A_HAND*9.81*t*t)**2 for t, h in fitted)/len(fitted))**0.5 \
         if fitted else float("nan")
     mean_h = sum(h for _, h in fitted)/len(fitted) if fitted else float("nan")
-    check(len(fitted) >= 3 and alpha > 0.03,
-          "alpha %.4f > 0.03 (fit over %g-%g s)" % (alpha, t0, t1))
+    check(len(fitted) >= 3 and lower < alpha < 0.1,
+          "%g < alpha %.4f < 0.1 (fit over %g-%g s)" % (lower, alpha, t0, t1))
     print("fit h = alpha A g t^2: RMS residual %.5f m, %.2f of the mean h %.5f m"
           % (residual, residual/mean_h, mean_h))
     print("GOAL alpha %.4f %s seed 2's band [0.05, 0.07]"
@@ -77,6 +87,7 @@ def check_parcels_kept():
 if __name__ == "__main__":
     res = rt.summary(".")
     check_atwood_number_and_rows(res)
-    check_layer_grows(res)
+    check_layer_grows(res, float(sys.argv[sys.argv.index("--lower") + 1])
+                      if "--lower" in sys.argv else 0.03)
     check_parcels_kept()
     sys.exit(checks.status())

@@ -9,18 +9,25 @@ The bed does not move, so the gas is steady but for the ramp (dU/dt =
 against the drag). Continuity then gives every horizontal row of cells
 the inlet's superficial velocity: the sum over a row's faces of ag_f phi
 is U times the row's area, whatever the gas fraction. On this mesh of
-cubes the cell velocity rebuilt from those faces, U_y = (flux below +
-flux above)/(2 ag S_f), has the row mean of ag U_y equal to U:
+cubes the cell velocity's first part, the rebuilt superficial flux over
+the cell's gas fraction, U_y = (flux below + flux above)/(2 ag S_f), has
+the row mean of ag U_y equal to U:
 
     mean over row j of alpha.air U.air_y = U = 0.12 m/s   (every row)
 
+Its second part (mppicSuperficialFlux::cellVelocity) restores the cell's
+own H where the faces' interpolation smoothed it: zero where H is the
+same from cell to cell, as in the bed, but not in the freeboard's first
+rows, where the gas leaving the bed slows from its interstitial 0.32 m/s
+to 0.12 m/s (measured there 2.4 % below U at 0.6 s, and 2.5 % with the
+ramp four times slower: a steady offset, not a growing one).
   - the written time 0.6 s, inlet velocity 0.12 m/s (the ramp's end);
-  - every row of the bed (solids fraction above 0.3) and of the
-    freeboard within 2 % of U; the top bed row named in the output (with
-    MPPICFoam's coupling, HbyA + rAU reconstruct(forces), it carries about
-    half: its 1/A is the bed's and one of its faces has the freeboard's
-    gradient; measured there 0.062 and 0.34 m/s in the freeboard's
-    first row).
+  - every row of the bed (solids fraction above 0.3) within 2 % of U,
+    the top bed row named in the output (with MPPICFoam's coupling, HbyA
+    + rAU reconstruct(forces), it carries about half: its 1/A is the
+    bed's and one of its faces has the freeboard's gradient; measured
+    there 0.062, and 0.34 m/s in the freeboard's first row);
+  - every row of the freeboard within 4 % of U.
 
 The pressure drop over the fixed bed is then Ergun's for its voidage
 0.38 (minimumFluidization.py's formula and hand value, 0.6359 of the
@@ -57,16 +64,19 @@ def check_rows_carry_inlet_velocity():
     bed = [j for j, s in enumerate(solids) if s > 0.3]
     check(len(bed) >= 19, "the bed fills %d rows (20 seeded)" % len(bed))
     top = max(bed)
-    worst = max(range(len(heights)),
-                key=lambda j: abs(superficial[j]/U_INLET - 1))
     check(abs(superficial[top]/U_INLET - 1) <= 0.02,
           "top bed row (y = %.3f m, solids %.3f): mean ag U_y %.4f m/s "
           "within 2 %% of %.2f" % (heights[top], solids[top],
                                    superficial[top], U_INLET))
-    check(abs(superficial[worst]/U_INLET - 1) <= 0.02,
-          "every one of %d rows within 2 %% of %.2f m/s (farthest: "
-          "y = %.3f m, %.4f)" % (len(heights), U_INLET, heights[worst],
-                                 superficial[worst]))
+    freeboard = [j for j in range(len(heights)) if j not in bed]
+    for rows, name, bound in ((bed, "bed", 0.02),
+                              (freeboard, "freeboard", 0.04)):
+        worst = max(rows, key=lambda j: abs(superficial[j]/U_INLET - 1))
+        check(abs(superficial[worst]/U_INLET - 1) <= bound,
+              "every one of the %s's %d rows within %g %% of %.2f m/s "
+              "(farthest: y = %.3f m, %.4f)"
+              % (name, len(rows), 100*bound, U_INLET, heights[worst],
+                 superficial[worst]))
 
 
 def check_fixed_bed_follows_ergun():

@@ -92,11 +92,12 @@ Usage
                                face coefficient of its two half cells
                                in series, 1/(ag_f interpolate(A/ag)),
                                H and the forces interpolated
-                               alongside, and the cell velocity the
-                               parcels see rebuilt from that flux
-                               over the cell's gas fraction; at most
-                               one of it and faceInterpolatedDrag
-                               true, else a FatalIOError         | false
+                               alongside, the time-derivative
+                               correction of that flux, and the cell
+                               velocity the parcels see rebuilt from
+                               it (mppicSuperficialFlux); at most one
+                               of it and faceInterpolatedDrag true,
+                               else a FatalIOError               | false
         balanceImplicitDrag  | after the gas solution the parcels get the
                                drag the gas got: each cell's parcels gain
                                UCoeff (U_g,new - U_g,old) over their mass
@@ -117,19 +118,26 @@ Usage
     The superficial-flux coupling: in a cell the gas's momentum balance
     gives its superficial velocity ag U = (H + F - grad p) ag/A, so the
     resistance per superficial velocity is A/ag and a face's is that of
-    its two half cells in series, interpolate(A/ag). The cell velocity is
-    rebuilt from the superficial face flux, U = reconstruct(ag_f phi)/ag.
-    At a jump of the gas fraction (the top row of a packed bed, a
-    bubble's edge) MPPICFoam's rebuild HbyA + rAU reconstruct(face
-    forces) mixes the bed's 1/A with the freeboard's pressure gradient:
-    the top row of a packed bed under a rising gas sees about half its
-    interstitial velocity and the row above too much. With the coupling,
-    the gas's pressure drop over a fixed bed is the drag its parcels get,
-    row by row. Off by default: with it a Rayleigh-Taylor mixing layer of
-    particles grows ten times too fast and a settling front lags
-    (docs/VALIDATION.md, the options the defaults leave off);
-    tests/regression/superficialFluxCoupling measures both couplings on a
-    fixed bed. No MFiX equivalent.
+    its two half cells in series, interpolate(A/ag). The flux's
+    time-derivative correction compares the old superficial flux with
+    the interpolated old superficial velocity, and the cell velocity is
+    the superficial face flux without that correction, rebuilt, over the
+    cell's gas fraction, with the part of the cell's own H that the
+    faces' interpolation smoothed away restored
+    (mppicSuperficialFlux::cellVelocity). At a jump of the gas fraction
+    (the top row of a packed bed, a bubble's edge) MPPICFoam's rebuild
+    HbyA + rAU reconstruct(face forces) mixes the bed's 1/A with the
+    freeboard's pressure gradient: the top row of a packed bed under a
+    rising gas sees about half its interstitial velocity and the row
+    above three times the inlet's. With the coupling the gas's pressure
+    drop over a fixed bed is the drag its parcels get, row by row, and
+    the freeboard's rows carry the inlet's velocity within 2.5 %
+    (tests/regression/superficialFluxCoupling measures both couplings on
+    a fixed bed). Off by default: a fluidized bed rests more of its
+    weight on the packing step and the distributor (the uniform bed's gas
+    carries 0.86 of it), and the settling-shock filling front falls
+    short (docs/VALIDATION.md, the options the defaults leave off). No
+    MFiX equivalent.
 
     The drag balance: with semi-implicit drag the gas takes the drag at its
     new velocity and the parcels took it at the old one; in beds whose
@@ -151,6 +159,7 @@ Usage
 #include "solidsFractionDeposition.H"
 #include "prescribedGasFlow.H"
 #include "reconstructFlux.H"
+#include "superficialFluxCoupling.H"
 #include "implicitDragBalance.H"
 #include "gasMassSources.H"
 #include "newCloudOrExit.H"
