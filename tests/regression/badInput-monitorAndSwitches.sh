@@ -12,7 +12,8 @@
 # cloud's U coupled explicitly (nothing to balance: the error names the
 # keyword and semiImplicit); a misspelt PIMPLE keyword,
 # superficialFluxCoupeling (the message lists the valid keywords, the
-# solver's own and pimpleControl's; stopped before the first step).
+# solver's own and pimpleControl's; stopped before the first step);
+# superficialFluxCoupling true with ddtSchemes backward (Euler only).
 . "${0%/*}/badInputFunctions"
 runDir="${1:?}"
 prepareCase "$runDir/case"
@@ -100,5 +101,13 @@ runBroken "$case" mppicPimpleFoam
 check fatal "$case/log.broken" $rc "unknown keyword superficialFluxCoupeling" \
     "superficialFluxCoupling" "nOuterCorrectors" || status=1
 stoppedBeforeFirstStep "$case/log.broken" $rc || status=1
+
+foamDictionary "$case/system/fvSolution" \
+    -entry PIMPLE/superficialFluxCoupeling -remove > /dev/null
+setEntry "$case" system/fvSolution PIMPLE/superficialFluxCoupling true
+setEntry "$case" system/fvSchemes ddtSchemes/default backward
+runBroken "$case" mppicPimpleFoam
+check fatal "$case/log.broken" $rc "ddtSchemes" "backward" \
+    "superficialFluxCoupling supports Euler only" || status=1
 
 exit $status
