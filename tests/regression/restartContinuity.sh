@@ -6,7 +6,8 @@
 #   - mppicPimpleFoam on tutorials/validation/uniformFluidization (a
 #     bubbling bed, gas solved), with coloringFunction, with it and
 #     capacityLimit push (which must have pushed after the restart), with
-#     conserveMomentum gas (-packsToGas), and with mfixSnider:
+#     conserveMomentum gas (-packsToGas), with PIMPLE
+#     superficialFluxCoupling true, and with mfixSnider:
 #     0 -> 0.05 s at once, and 0 -> 0.025 s then continued (startFrom
 #     latestTime) to 0.05 s; both write ascii at 17 digits;
 #   - mppicReactingPimpleFoam on tutorials/verification/wetBulb (a droplet
@@ -41,6 +42,11 @@ wholeAndContinued()
             sed -i "/\(coloringFunction\|mfixSnider\)Coeffs/,/}/s/^\( *\)closePackFraction .*/&\n\1$cloudEntry/" "$props"
             grep -q "$cloudEntry" "$props" \
                 || { echo "$name: $cloudEntry not set"; exit 1; }
+        fi
+        if [ -n "$pimpleSwitch" ]
+        then
+            setEntry "$runDir/$name.$piece" system/fvSolution \
+                "PIMPLE/$pimpleSwitch" true
         fi
     done
 
@@ -107,6 +113,16 @@ else
     echo "FAIL conserveMomentum gas: the gas took no share after the restart"
     status=1
 fi
+
+# PIMPLE superficialFluxCoupling: its time-derivative correction reads the
+# old superficial flux and the old cell velocity, which the continued run
+# must find as the whole one had them
+pimpleSwitch=superficialFluxCoupling
+wholeAndContinued validation/uniformFluidization bed.superficialFlux 17 \
+    0.025 0.05 "" -packing coloringFunction
+pimpleSwitch=""
+check sameState "$runDir/bed.superficialFlux.whole" \
+    "$runDir/bed.superficialFlux.continued" 0.05 1e-8 $bedFields || status=1
 
 wholeAndContinued validation/uniformFluidization bed.sixDigits 6 \
     0.025 0.05 "" -packing coloringFunction
