@@ -113,13 +113,10 @@ Usage
     its half cell's H, which p's fixedFluxPressure condition balances as it
     balances the body forces' flux (every shipped case has it on its
     walls). Off by default: MPPICFoam's form. No MFiX equivalent (MFiX
-    solves its momentum on a staggered grid). Parallel runs with either
-    interpolated face form (this or superficialFluxCoupling) do not give
-    the serial answer: on the uniform bed (tutorials/validation/
-    uniformFluidization, gas solved to 1e-13) after 40 steps on 2 ranks
-    the cloud is bitwise the serial one but U differs by up to 0.97 % of
-    its largest magnitude (0.67 % with superficialFluxCoupling), where
-    MPPICFoam's form differs by 4e-10; the cause is not found yet.
+    solves its momentum on a staggered grid). Either interpolated face
+    form (this or superficialFluxCoupling) gives the serial answer on 2
+    ranks to round-off (tests/regression/parallelFaceForms: U within 6e-10
+    of its largest magnitude after 40 steps of the uniform bed).
 
     The superficial-flux coupling: in a cell the gas's momentum balance
     gives its superficial velocity ag U = (H + F - grad p) ag/A, so the
