@@ -24,10 +24,10 @@ runDir="${1:?usage: parallelFaceForms.sh <runDir>}"
 status=0
 for form in faceInterpolatedDrag superficialFluxCoupling
 do
+    mkdir -p "$runDir/$form"
     for mode in serial parallel
     do
         dir="$runDir/$form/$mode"
-        mkdir -p "$runDir/$form"
         copyTutorial validation/uniformFluidization "$dir"
         tightGasSolvers "$dir" || exit 1
         setEntry "$dir" system/fvSolution PIMPLE/$form true

@@ -3,12 +3,9 @@
 wrote from its run and the one -resultsOnly wrote from the same run hold the
 same figures (validateResultsOnly.sh)."""
 import json
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.environ["MPPIC_PROJECT_DIR"], "tests",
-                                "lib"))
-import checks  # noqa: E402
+import checks
 
 first, second = (json.load(open(path)) for path in sys.argv[1:3])
 checks.report(first["case"] == second["case"] == "terminalVelocity",
